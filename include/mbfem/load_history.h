@@ -1,0 +1,33 @@
+#ifndef mbfem_load_history_h
+#define mbfem_load_history_h
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /**
+   * Pseudo-time of the quasi-static load path. Loads and prescribed
+   * displacements are functions of t; t runs from 0 to "End time" in equal
+   * increments. With friction the answer depends on the path (paper,
+   * eq. 15), so the increments are part of the model, not of the solver.
+   */
+  struct LoadHistory
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Pseudo-time at the end of increment @p k (k = 1..n_increments). */
+    double
+    time(const unsigned int k) const;
+
+    unsigned int n_increments = 1;
+    double       end_time     = 1.;
+  };
+} // namespace mbfem
+
+#endif

@@ -1,0 +1,79 @@
+#ifndef mbfem_parameters_h
+#define mbfem_parameters_h
+
+#include <mbfem/block.h>
+#include <mbfem/boundary_conditions.h>
+#include <mbfem/direct_solver.h>
+#include <mbfem/exact_solution.h>
+#include <mbfem/load_history.h>
+#include <mbfem/material.h>
+#include <mbfem/mesh.h>
+#include <mbfem/order_study.h>
+#include <mbfem/output.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /** The top-level entries of a parameter file. */
+  struct RunParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    unsigned int dimension = 2;
+    std::string  mode      = "simulation";
+
+    /** Screen output without timings or paths, for numdiff comparison. */
+    bool test_mode = false;
+  };
+
+  /**
+   * Everything a run reads from its parameter file. Each member declares
+   * and parses its own subsection; this struct only gathers them, so the
+   * documentation printed by `mbfem --print-parameters` is the manual.
+   */
+  template <int dim>
+  struct Parameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** @p input_folder: where relative paths in the file are taken from. */
+    void
+    parse_parameters(ParameterHandler &prm, const std::string &input_folder);
+
+    RunParameters            run;
+    MeshParameters           mesh;
+    DiscretisationParameters discretisation;
+    Material                 material;
+    DirectSolver::Parameters linear_solver;
+    BoundaryConditions<dim>  boundary_conditions;
+    LoadHistory              load_history;
+    ExactSolution<dim>       exact_solution;
+    OutputParameters         output;
+    OrderStudyParameters     order_study;
+  };
+
+  /**
+   * Reads only "Dimension" from @p filename, so that main() can choose
+   * Parameters<2> or Parameters<3>. Throws with the file name if the file
+   * cannot be read.
+   */
+  unsigned int
+  read_dimension(const std::string &filename);
+
+  /** Declares, reads @p filename (.prm or .json) and parses. */
+  template <int dim>
+  void
+  read_parameters(const std::string &filename, Parameters<dim> &parameters);
+} // namespace mbfem
+
+#endif

@@ -1,0 +1,542 @@
+#include <mbfem/block.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/numerics/vector_tools.h>
+
+namespace mbfem
+{
+  void
+  DiscretisationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite element");
+    {
+      prm.declare_entry("Polynomial degree",
+                        "2",
+                        Patterns::Integer(1, 4),
+                        "Degree p of the FE_Q(p) Lagrange elements of every "
+                        "block's displacement (1 to 4).");
+      prm.declare_entry(
+        "Mapping degree",
+        "0",
+        Patterns::Integer(0, 4),
+        "Degree of the MappingQ that maps cells to their curved shape. 0 "
+        "means the same as the polynomial degree, which keeps the optimal "
+        "convergence rates on curved boundaries.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  DiscretisationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite element");
+    {
+      degree         = prm.get_integer("Polynomial degree");
+      mapping_degree = prm.get_integer("Mapping degree");
+      if (mapping_degree == 0)
+        mapping_degree = degree;
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  Block<dim>::Block(const Material                 &material,
+                    const DiscretisationParameters &discretisation,
+                    const std::string              &solver_package)
+    : material(material)
+    , fe(FE_Q<dim>(discretisation.degree), dim)
+    , mapping(discretisation.mapping_degree)
+    , direct_solver(solver_package)
+  {}
+
+
+
+  template <int dim>
+  void
+  Block<dim>::setup_system(const BoundaryConditions<dim> &boundary_conditions)
+  {
+    dof_handler.reinit(triangulation);
+    dof_handler.distribute_dofs(fe);
+    solution.reinit(dof_handler.n_dofs());
+    load.reinit(dof_handler.n_dofs());
+
+    make_constraints(boundary_conditions);
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    stiffness.reinit(complete_index_set(dof_handler.n_dofs()),
+                     complete_index_set(dof_handler.n_dofs()),
+                     dsp,
+                     MPI_COMM_SELF);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::make_constraints(
+    const BoundaryConditions<dim> &boundary_conditions)
+  {
+    constraints.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    for (const auto &[id, mask] : boundary_conditions.dirichlet)
+      VectorTools::interpolate_boundary_values(
+        mapping,
+        dof_handler,
+        id,
+        *boundary_conditions.prescribed_displacement,
+        constraints,
+        mask);
+    constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::cell_matrix(const FEValues<dim> &fe_values,
+                          FullMatrix<double>  &matrix) const
+  {
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   n      = fe.n_dofs_per_cell();
+    const double                         lambda = material.lambda();
+    const double                         mu     = material.mu();
+    std::vector<SymmetricTensor<2, dim>> eps(n);
+    std::vector<double>                  div(n);
+
+    matrix = 0.;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+            div[i] = trace(eps[i]);
+          }
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = i; j < n; ++j)
+            matrix(i, j) +=
+              (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) * JxW;
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        matrix(i, j) = matrix(j, i);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::assemble_stiffness()
+  {
+    stiffness = 0.;
+    FEValues<dim>      fe_values(mapping,
+                            fe,
+                            QGauss<dim>(fe.degree + 1),
+                            update_gradients | update_JxW_values);
+    FullMatrix<double> matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell_matrix(fe_values, matrix);
+        cell->get_dof_indices(dof_indices);
+        // The matrix alone: its constrained rows and columns do not depend
+        // on the prescribed values, so one factorisation serves all times.
+        constraints.distribute_local_to_global(matrix, dof_indices, stiffness);
+      }
+    stiffness.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::factorize()
+  {
+    direct_solver.factorize(stiffness);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::assemble_load(BoundaryConditions<dim> &boundary_conditions,
+                            const double             time)
+  {
+    boundary_conditions.set_time(time);
+    make_constraints(boundary_conditions);
+    load = 0.;
+
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            QGauss<dim>(fe.degree + 2),
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    FEFaceValues<dim>                    fe_face_values(mapping,
+                                     fe,
+                                     QGauss<dim - 1>(fe.degree + 2),
+                                     update_values | update_quadrature_points |
+                                       update_JxW_values);
+    FEValues<dim>                        stiffness_values(mapping,
+                                   fe,
+                                   QGauss<dim>(fe.degree + 1),
+                                   update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    FullMatrix<double>                   matrix(n, n);
+    Vector<double>                       cell_load(n);
+    std::vector<types::global_dof_index> dof_indices(n);
+    Vector<double>                       value(dim);
+
+    // Gravity acts in -y (2D) or -z (3D).
+    Tensor<1, dim> weight;
+    weight[dim - 1] = -material.unit_weight;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell_load = 0.;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            boundary_conditions.body_force->vector_value(
+              fe_values.quadrature_point(q), value);
+            Tensor<1, dim> b = weight;
+            for (unsigned int d = 0; d < dim; ++d)
+              b[d] += value[d];
+            for (unsigned int i = 0; i < n; ++i)
+              cell_load(i) +=
+                fe_values[displacement].value(i, q) * b * fe_values.JxW(q);
+          }
+
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              boundary_conditions.traction_boundaries.count(
+                face->boundary_id()) == 1)
+            {
+              fe_face_values.reinit(cell, face);
+              for (const unsigned int q :
+                   fe_face_values.quadrature_point_indices())
+                {
+                  boundary_conditions.traction->vector_value(
+                    fe_face_values.quadrature_point(q), value);
+                  Tensor<1, dim> t;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    t[d] = value[d];
+                  for (unsigned int i = 0; i < n; ++i)
+                    cell_load(i) += fe_face_values[displacement].value(i, q) *
+                                    t * fe_face_values.JxW(q);
+                }
+            }
+
+        cell->get_dof_indices(dof_indices);
+        // The cell matrix is needed only where a prescribed displacement
+        // enters: it moves -K u_D to the right-hand side.
+        bool has_constrained_dof = false;
+        for (const auto i : dof_indices)
+          if (constraints.is_inhomogeneously_constrained(i))
+            has_constrained_dof = true;
+        if (has_constrained_dof)
+          {
+            stiffness_values.reinit(cell);
+            cell_matrix(stiffness_values, matrix);
+            constraints.distribute_local_to_global(cell_load,
+                                                   dof_indices,
+                                                   load,
+                                                   matrix);
+          }
+        else
+          constraints.distribute_local_to_global(cell_load, dof_indices, load);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::solve()
+  {
+    direct_solver.solve(solution, load);
+    constraints.distribute(solution);
+  }
+
+
+
+  template <int dim>
+  ErrorNorms
+  Block<dim>::compute_errors(const Function<dim> &exact_displacement,
+                             const Function<dim> &exact_stress) const
+  {
+    AssertDimension(exact_displacement.n_components, dim);
+    AssertDimension(exact_stress.n_components, dim * dim);
+
+    const QGauss<dim>                    quadrature(fe.degree + 3);
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<Tensor<1, dim>>          u(quadrature.size());
+    std::vector<SymmetricTensor<2, dim>> eps(quadrature.size());
+    Vector<double>                       u_exact(dim);
+    Vector<double>                       sigma_exact(dim * dim);
+
+    double u_error2 = 0., u_norm2 = 0., s_error2 = 0., s_norm2 = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_values(solution, u);
+        fe_values[displacement].get_function_symmetric_gradients(solution, eps);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Point<dim> &x = fe_values.quadrature_point(q);
+            exact_displacement.vector_value(x, u_exact);
+            exact_stress.vector_value(x, sigma_exact);
+            const SymmetricTensor<2, dim> sigma = material.stress(eps[q]);
+            const double                  JxW   = fe_values.JxW(q);
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                u_error2 +=
+                  Utilities::fixed_power<2>(u[q][i] - u_exact[i]) * JxW;
+                u_norm2 += Utilities::fixed_power<2>(u_exact[i]) * JxW;
+                for (unsigned int j = 0; j < dim; ++j)
+                  {
+                    const double s = sigma_exact[i * dim + j];
+                    s_error2 +=
+                      Utilities::fixed_power<2>(sigma[i][j] - s) * JxW;
+                    s_norm2 += s * s * JxW;
+                  }
+              }
+          }
+      }
+
+    ErrorNorms errors;
+    errors.displacement = std::sqrt(u_error2);
+    errors.stress       = std::sqrt(s_error2);
+    errors.displacement_relative =
+      u_norm2 > 0. ? std::sqrt(u_error2 / u_norm2) : errors.displacement;
+    errors.stress_relative =
+      s_norm2 > 0. ? std::sqrt(s_error2 / s_norm2) : errors.stress;
+    return errors;
+  }
+
+
+
+  template <int dim>
+  std::vector<Vector<double>>
+  Block<dim>::rigid_body_modes() const
+  {
+    std::vector<Point<dim>> points(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+    std::vector<unsigned int>            component(dof_handler.n_dofs());
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int i = 0; i < dof_indices.size(); ++i)
+          component[dof_indices[i]] = fe.system_to_component_index(i).first;
+      }
+
+    // Rotations about the centre, lengths in units of the block's size:
+    // this keeps the modes of unit order whatever the units of the model.
+    Point<dim> centre;
+    for (const auto &p : points)
+      centre += p / static_cast<double>(points.size());
+    const double size = GridTools::diameter(triangulation);
+
+    const unsigned int          n_modes = (dim == 2 ? 3 : 6);
+    std::vector<Vector<double>> modes(n_modes, Vector<double>(points.size()));
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const Tensor<1, dim> x = (points[i] - centre) / size;
+        const unsigned int   c = component[i];
+        modes[c](i)            = 1.;
+        if (dim == 2)
+          modes[2](i) = (c == 0 ? -x[1] : x[0]); // rotation about z
+        else
+          for (unsigned int axis = 0; axis < 3; ++axis)
+            {
+              // (e_axis x x)_c: rotation about the coordinate axis
+              Tensor<1, dim> e;
+              e[axis]                   = 1.;
+              const Tensor<1, dim> curl = cross_product_3d(e, x);
+              modes[dim + axis](i)      = curl[c];
+            }
+      }
+    return modes;
+  }
+
+
+
+  template <int dim>
+  std::vector<Vector<double>>
+  Block<dim>::free_rigid_body_modes(
+    const BoundaryConditions<dim> &boundary_conditions) const
+  {
+    const std::vector<Vector<double>> modes   = rigid_body_modes();
+    const unsigned int                n_modes = modes.size();
+
+    // G = A^T A, with A the modes restricted to the prescribed DoFs: a mode
+    // is held iff it moves some prescribed DoF, i.e. G's null space is the
+    // set of free modes.
+    LAPACKFullMatrix<double> gram(n_modes, n_modes);
+    for (const auto &[id, mask] : boundary_conditions.dirichlet)
+      for (const auto i :
+           DoFTools::extract_boundary_dofs(dof_handler, mask, {id}))
+        for (unsigned int a = 0; a < n_modes; ++a)
+          for (unsigned int b = 0; b < n_modes; ++b)
+            gram(a, b) += modes[a](i) * modes[b](i);
+
+    // Mode values are of unit order, so a held mode has an eigenvalue of
+    // order one or more (one prescribed DoF at distance 1e-4 of the block
+    // size from the centre still gives 1e-8); a free one has round-off.
+    Vector<double>     eigenvalues;
+    FullMatrix<double> eigenvectors;
+    gram.compute_eigenvalues_symmetric(
+      -1., 1e-10, 1e-14, eigenvalues, eigenvectors);
+
+    // The null space has no preferred basis (LAPACK may return any
+    // rotation of it); reduced row-echelon form makes it unique and
+    // readable: "translation x", not "0.71 translation x + 0.71 ...".
+    const unsigned int n_free = eigenvalues.size();
+    FullMatrix<double> basis(n_free, n_modes);
+    for (unsigned int k = 0; k < n_free; ++k)
+      for (unsigned int a = 0; a < n_modes; ++a)
+        basis(k, a) = eigenvectors(a, k);
+    unsigned int row = 0;
+    for (unsigned int column = 0; column < n_modes && row < n_free; ++column)
+      {
+        unsigned int pivot = row;
+        for (unsigned int k = row + 1; k < n_free; ++k)
+          if (std::abs(basis(k, column)) > std::abs(basis(pivot, column)))
+            pivot = k;
+        if (std::abs(basis(pivot, column)) < 1e-8)
+          continue;
+        basis.swap_row(row, pivot);
+        const double scale = basis(row, column);
+        for (unsigned int a = 0; a < n_modes; ++a)
+          basis(row, a) /= scale;
+        for (unsigned int k = 0; k < n_free; ++k)
+          if (k != row)
+            {
+              const double factor = basis(k, column);
+              for (unsigned int a = 0; a < n_modes; ++a)
+                basis(k, a) -= factor * basis(row, a);
+            }
+        ++row;
+      }
+
+    std::vector<Vector<double>> free_modes(n_free, Vector<double>(n_modes));
+    for (unsigned int k = 0; k < n_free; ++k)
+      for (unsigned int a = 0; a < n_modes; ++a)
+        free_modes[k](a) = (std::abs(basis(k, a)) < 1e-12 ? 0. : basis(k, a));
+    return free_modes;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Block<dim>::describe_rigid_body_mode(const Vector<double> &coefficients)
+  {
+    static const char *names_2d[] = {"translation x",
+                                     "translation y",
+                                     "rotation about z"};
+    static const char *names_3d[] = {"translation x",
+                                     "translation y",
+                                     "translation z",
+                                     "rotation about x",
+                                     "rotation about y",
+                                     "rotation about z"};
+    std::string        description;
+    for (unsigned int a = 0; a < coefficients.size(); ++a)
+      if (std::abs(coefficients(a)) > 1e-3)
+        {
+          description += (description.empty() ? "" : " + ");
+          if (std::abs(std::abs(coefficients(a)) - 1.) > 1e-3)
+            {
+              char factor[32];
+              std::snprintf(factor, sizeof(factor), "%.2f ", coefficients(a));
+              description += factor;
+            }
+          description += (dim == 2 ? names_2d[a] : names_3d[a]);
+        }
+    return description;
+  }
+
+
+
+  template <int dim>
+  double
+  Block<dim>::max_displacement() const
+  {
+    // Lagrange elements: nodal values are point values, so the maximum over
+    // the support points is the one a user sees in ParaView.
+    double                               max2 = 0.;
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int v = 0; v < fe.base_element(0).n_dofs_per_cell(); ++v)
+          {
+            double norm2 = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              norm2 += Utilities::fixed_power<2>(
+                solution(dof_indices[fe.component_to_system_index(d, v)]));
+            max2 = std::max(max2, norm2);
+          }
+      }
+    return std::sqrt(max2);
+  }
+
+
+
+  template <int dim>
+  double
+  Block<dim>::max_von_mises_stress() const
+  {
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            QGauss<dim>(fe.degree + 1),
+                            update_gradients);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> eps(fe_values.n_quadrature_points);
+    double                               result = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_symmetric_gradients(solution, eps);
+        for (const auto &e : eps)
+          result =
+            std::max(result, von_mises_stress(material.stress_3d<dim>(e)));
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  Block<dim>::n_dofs() const
+  {
+    return dof_handler.n_dofs();
+  }
+
+
+
+  template class Block<2>;
+  template class Block<3>;
+} // namespace mbfem

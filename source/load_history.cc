@@ -1,0 +1,43 @@
+#include <mbfem/load_history.h>
+
+namespace mbfem
+{
+  void
+  LoadHistory::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load history");
+    {
+      prm.declare_entry("Number of increments",
+                        "1",
+                        Patterns::Integer(1),
+                        "Number of equal load increments from t = 0 to "
+                        "'End time'. Functions of t describe the loads.");
+      prm.declare_entry("End time",
+                        "1",
+                        Patterns::Double(0.),
+                        "Pseudo-time at the end of the load history.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LoadHistory::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load history");
+    {
+      n_increments = prm.get_integer("Number of increments");
+      end_time     = prm.get_double("End time");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  double
+  LoadHistory::time(const unsigned int k) const
+  {
+    return end_time * k / n_increments;
+  }
+} // namespace mbfem

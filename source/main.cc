@@ -1,0 +1,118 @@
+// mbfem: the multi-body finite element method for frictional contact
+// between elastic blocks (Su & Zhao 2016), on deal.II.
+//
+//   mbfem FILE.prm              run the file (.prm or .json)
+//   mbfem --print-parameters    every parameter with documentation
+
+#include <mbfem/elastic_problem.h>
+#include <mbfem/order_study.h>
+#include <mbfem/parameters.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+
+#include <iostream>
+#include <string>
+
+namespace
+{
+  void
+  print_usage(std::ostream &out)
+  {
+    out << "Usage: mbfem FILE.prm|FILE.json\n"
+           "       mbfem --print-parameters [2|3] [prm|json]\n"
+           "       mbfem --help\n\n"
+           "Runs the multi-body finite element model described by the "
+           "parameter file.\n"
+           "--print-parameters writes every parameter with its default and "
+           "documentation\n"
+           "(for Dimension = 2 unless 3 is given), as a .prm file or as JSON "
+           "(values only);\n"
+           "the manual is doc/parameters.prm.\n";
+  }
+
+
+
+  template <int dim>
+  void
+  run(const std::string &filename, dealii::ConditionalOStream &pcout)
+  {
+    mbfem::Parameters<dim> parameters;
+    mbfem::read_parameters(filename, parameters);
+    if (parameters.run.mode == "order study")
+      mbfem::OrderStudy<dim>(parameters, pcout).run();
+    else
+      mbfem::ElasticProblem<dim>(parameters, pcout).run();
+  }
+} // namespace
+
+
+
+int
+main(int argc, char *argv[])
+{
+  using namespace dealii;
+  try
+    {
+      Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      ConditionalOStream               pcout(
+        std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+
+      const std::string first = (argc > 1 ? argv[1] : "");
+      if (argc < 2 || first == "--help" || first == "-h")
+        {
+          print_usage(argc < 2 ? std::cerr : std::cout);
+          return argc < 2 ? 1 : 0;
+        }
+      if (first == "--print-parameters")
+        {
+          const std::string dim    = (argc > 2 ? argv[2] : "2");
+          const std::string format = (argc > 3 ? argv[3] : "prm");
+          AssertThrow((dim == "2" || dim == "3") &&
+                        (format == "prm" || format == "json"),
+                      ExcMessage("Use: mbfem --print-parameters [2|3] "
+                                 "[prm|json]"));
+          ParameterHandler prm;
+          if (dim == "3")
+            mbfem::Parameters<3>::declare_parameters(prm);
+          else
+            mbfem::Parameters<2>::declare_parameters(prm);
+          prm.print_parameters(std::cout,
+                               format == "json" ? ParameterHandler::ShortJSON :
+                                                  ParameterHandler::PRM);
+          return 0;
+        }
+      AssertThrow(argc == 2,
+                  ExcMessage("mbfem takes one parameter file; see --help."));
+      AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
+                  ExcMessage("This version of mbfem runs on one MPI process; "
+                             "run it without mpirun or with -np 1."));
+
+      const unsigned int dim = mbfem::read_dimension(first);
+      if (dim == 2)
+        run<2>(first, pcout);
+      else
+        run<3>(first, pcout);
+    }
+  catch (ExceptionBase &exc)
+    {
+      // The user-facing part only: where in deal.II an error was raised is
+      // of no use to someone fixing their input file.
+      std::cerr << "\nmbfem: error\n";
+      exc.print_info(std::cerr);
+      std::cerr << "Aborting." << std::endl;
+      return 1;
+    }
+  catch (std::exception &exc)
+    {
+      std::cerr << "\nmbfem: error\n"
+                << exc.what() << "\nAborting." << std::endl;
+      return 1;
+    }
+  catch (...)
+    {
+      std::cerr << "\nmbfem: unknown error. Aborting." << std::endl;
+      return 1;
+    }
+  return 0;
+}
