@@ -53,12 +53,23 @@ namespace mbfem
   template <int dim>
   Block<dim>::Block(const Material                 &material,
                     const DiscretisationParameters &discretisation,
-                    const std::string              &solver_package)
-    : material(material)
+                    const std::string              &solver_package,
+                    const types::material_id        id)
+    : id(id)
+    , material(material)
     , fe(FE_Q<dim>(discretisation.degree), dim)
     , mapping(discretisation.mapping_degree)
     , direct_solver(solver_package)
   {}
+
+
+
+  template <int dim>
+  std::string
+  Block<dim>::name() const
+  {
+    return "block " + std::to_string(id);
+  }
 
 
 
@@ -70,7 +81,23 @@ namespace mbfem
     dof_handler.distribute_dofs(fe);
     solution.reinit(dof_handler.n_dofs());
     load.reinit(dof_handler.n_dofs());
+    external_load.reinit(dof_handler.n_dofs());
 
+    pins.clear();
+    make_constraints(boundary_conditions);
+
+    // The floating modes, as displacement vectors, and the pins that
+    // remove them; then the constraints again, now with the pins.
+    const std::vector<Vector<double>> modes = rigid_body_modes();
+    free_modes.clear();
+    for (const auto &coefficients : free_rigid_body_modes())
+      {
+        Vector<double> mode(dof_handler.n_dofs());
+        for (unsigned int a = 0; a < modes.size(); ++a)
+          mode.add(coefficients(a), modes[a]);
+        free_modes.push_back(mode);
+      }
+    choose_pins();
     make_constraints(boundary_conditions);
 
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
@@ -88,17 +115,124 @@ namespace mbfem
   Block<dim>::make_constraints(
     const BoundaryConditions<dim> &boundary_conditions)
   {
-    constraints.clear();
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    physical_constraints.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler, physical_constraints);
+    const std::vector<types::boundary_id> ids =
+      triangulation.get_boundary_ids();
+    const auto has_id = [&ids](const types::boundary_id id) {
+      return std::find(ids.begin(), ids.end(), id) != ids.end();
+    };
+
     for (const auto &[id, mask] : boundary_conditions.dirichlet)
-      VectorTools::interpolate_boundary_values(
-        mapping,
-        dof_handler,
-        id,
-        *boundary_conditions.prescribed_displacement,
-        constraints,
-        mask);
+      if (has_id(id))
+        VectorTools::interpolate_boundary_values(
+          mapping,
+          dof_handler,
+          id,
+          *boundary_conditions.prescribed_displacement,
+          physical_constraints,
+          mask);
+
+    if (!boundary_conditions.point_supports.empty())
+      {
+        const std::vector<Point<dim>> points = support_points();
+        const double tolerance = 1e-6 * GridTools::diameter(triangulation);
+        std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+        for (const auto &[point, mask] : boundary_conditions.point_supports)
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            {
+              cell->get_dof_indices(dof_indices);
+              for (unsigned int i = 0; i < dof_indices.size(); ++i)
+                if (mask[fe.system_to_component_index(i).first] &&
+                    points[dof_indices[i]].distance(point) < tolerance &&
+                    !physical_constraints.is_constrained(dof_indices[i]))
+                  physical_constraints.add_line(dof_indices[i]);
+            }
+      }
+
+    for (const auto &[id, component] : boundary_conditions.rigid_platens)
+      if (has_id(id))
+        {
+          std::vector<bool> selected(dim, false);
+          selected[component] = true;
+          const IndexSet platen_dofs =
+            DoFTools::extract_boundary_dofs(dof_handler,
+                                            ComponentMask(selected),
+                                            {id});
+          types::global_dof_index master = numbers::invalid_dof_index;
+          for (const auto i : platen_dofs)
+            {
+              AssertThrow(!physical_constraints.is_constrained(i),
+                          ExcMessage(
+                            name() + ": the rigid platen on boundary " +
+                            std::to_string(id) +
+                            " overlaps a prescribed displacement of the same "
+                            "component."));
+              if (master == numbers::invalid_dof_index)
+                master = i;
+              else
+                {
+                  physical_constraints.add_line(i);
+                  physical_constraints.add_entry(i, master, 1.);
+                }
+            }
+        }
+    physical_constraints.close();
+
+    constraints.clear();
+    constraints.merge(physical_constraints);
+    for (const auto i : pins)
+      if (!constraints.is_constrained(i))
+        constraints.add_line(i);
     constraints.close();
+
+    homogeneous_constraints.clear();
+    homogeneous_constraints.copy_from(constraints);
+    for (const auto &line : homogeneous_constraints.get_lines())
+      homogeneous_constraints.set_inhomogeneity(line.index, 0.);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::choose_pins()
+  {
+    // Greedy column pivoting on the free modes: pick the DoF where the
+    // (remaining) modes move most, then remove that direction. q picks give
+    // a nonsingular q x q system, i.e. a statically determinate support.
+    const unsigned int          q        = free_modes.size();
+    std::vector<Vector<double>> residual = free_modes;
+    for (unsigned int pick = 0; pick < q; ++pick)
+      {
+        types::global_dof_index best       = numbers::invalid_dof_index;
+        double                  best_norm2 = 0.;
+        for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+          if (!physical_constraints.is_constrained(i))
+            {
+              double norm2 = 0.;
+              for (const auto &r : residual)
+                norm2 += r(i) * r(i);
+              if (norm2 > best_norm2 * (1. + 1e-12))
+                {
+                  best_norm2 = norm2;
+                  best       = i;
+                }
+            }
+        AssertThrow(best != numbers::invalid_dof_index && best_norm2 > 1e-20,
+                    ExcMessage(name() + ": cannot pin its free modes."));
+        pins.push_back(best);
+
+        // residual <- residual (I - v v^T), v = residual row at best
+        std::vector<double> v(q);
+        for (unsigned int a = 0; a < q; ++a)
+          v[a] = residual[a](best) / std::sqrt(best_norm2);
+        Vector<double> combination(dof_handler.n_dofs());
+        for (unsigned int a = 0; a < q; ++a)
+          combination.add(v[a], residual[a]);
+        for (unsigned int a = 0; a < q; ++a)
+          residual[a].add(-v[a], combination);
+      }
   }
 
 
@@ -166,7 +300,16 @@ namespace mbfem
   void
   Block<dim>::factorize()
   {
-    direct_solver.factorize(stiffness);
+    try
+      {
+        direct_solver.factorize(stiffness);
+      }
+    catch (ExceptionBase &e)
+      {
+        std::ostringstream message;
+        e.print_info(message);
+        AssertThrow(false, ExcMessage(name() + ": " + message.str()));
+      }
   }
 
 
@@ -178,7 +321,8 @@ namespace mbfem
   {
     boundary_conditions.set_time(time);
     make_constraints(boundary_conditions);
-    load = 0.;
+    load          = 0.;
+    external_load = 0.;
 
     const unsigned int                   n = fe.n_dofs_per_cell();
     FEValues<dim>                        fe_values(mapping,
@@ -242,6 +386,9 @@ namespace mbfem
             }
 
         cell->get_dof_indices(dof_indices);
+        for (unsigned int i = 0; i < n; ++i)
+          external_load(dof_indices[i]) += cell_load(i);
+
         // The cell matrix is needed only where a prescribed displacement
         // enters: it moves -K u_D to the right-hand side.
         bool has_constrained_dof = false;
@@ -266,71 +413,109 @@ namespace mbfem
 
   template <int dim>
   void
-  Block<dim>::solve()
+  Block<dim>::add_point_forces(const std::vector<types::global_dof_index> &dofs,
+                               const std::vector<double> &forces)
   {
-    direct_solver.solve(solution, load);
-    constraints.distribute(solution);
+    AssertDimension(dofs.size(), forces.size());
+    Vector<double> local(forces.begin(), forces.end());
+    homogeneous_constraints.distribute_local_to_global(local, dofs, load);
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      external_load(dofs[i]) += forces[i];
   }
 
 
 
   template <int dim>
-  ErrorNorms
-  Block<dim>::compute_errors(const Function<dim> &exact_displacement,
-                             const Function<dim> &exact_stress) const
+  void
+  Block<dim>::solve(const std::vector<double> &alpha)
   {
-    AssertDimension(exact_displacement.n_components, dim);
-    AssertDimension(exact_stress.n_components, dim * dim);
+    direct_solver.solve(solution, load);
+    constraints.distribute(solution);
+    AssertThrow(alpha.empty() || alpha.size() == free_modes.size(),
+                ExcInternalError());
+    for (unsigned int i = 0; i < alpha.size(); ++i)
+      solution.add(alpha[i], free_modes[i]);
+  }
 
-    const QGauss<dim>                    quadrature(fe.degree + 3);
-    FEValues<dim>                        fe_values(mapping,
-                            fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<Tensor<1, dim>>          u(quadrature.size());
-    std::vector<SymmetricTensor<2, dim>> eps(quadrature.size());
-    Vector<double>                       u_exact(dim);
-    Vector<double>                       sigma_exact(dim * dim);
 
-    double u_error2 = 0., u_norm2 = 0., s_error2 = 0., s_norm2 = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+
+  template <int dim>
+  FullMatrix<double>
+  Block<dim>::flexibility(
+    const std::vector<types::global_dof_index> &dofs) const
+  {
+    const unsigned int     m = dofs.size();
+    const std::size_t      n = dof_handler.n_dofs();
+    FullMatrix<double>     result(m, m);
+    constexpr unsigned int chunk = 64; // right-hand sides per solve
+    std::vector<double>    rhs, x;
+    for (unsigned int first = 0; first < m; first += chunk)
       {
-        fe_values.reinit(cell);
-        fe_values[displacement].get_function_values(solution, u);
-        fe_values[displacement].get_function_symmetric_gradients(solution, eps);
-        for (const unsigned int q : fe_values.quadrature_point_indices())
+        const unsigned int count = std::min(chunk, m - first);
+        rhs.assign(n * count, 0.);
+        x.assign(n * count, 0.);
+        for (unsigned int k = 0; k < count; ++k)
           {
-            const Point<dim> &x = fe_values.quadrature_point(q);
-            exact_displacement.vector_value(x, u_exact);
-            exact_stress.vector_value(x, sigma_exact);
-            const SymmetricTensor<2, dim> sigma = material.stress(eps[q]);
-            const double                  JxW   = fe_values.JxW(q);
-            for (unsigned int i = 0; i < dim; ++i)
-              {
-                u_error2 +=
-                  Utilities::fixed_power<2>(u[q][i] - u_exact[i]) * JxW;
-                u_norm2 += Utilities::fixed_power<2>(u_exact[i]) * JxW;
-                for (unsigned int j = 0; j < dim; ++j)
-                  {
-                    const double s = sigma_exact[i * dim + j];
-                    s_error2 +=
-                      Utilities::fixed_power<2>(sigma[i][j] - s) * JxW;
-                    s_norm2 += s * s * JxW;
-                  }
-              }
+            // A unit force at a constrained DoF goes where the constraints
+            // send it (a platen node loads the platen; a fixed node, none).
+            Vector<double> column(n);
+            homogeneous_constraints.distribute_local_to_global(
+              Vector<double>({1.}),
+              std::vector<types::global_dof_index>{dofs[first + k]},
+              column);
+            std::copy(column.begin(), column.end(), rhs.begin() + k * n);
+          }
+        direct_solver.solve(x.data(), rhs.data(), count);
+        for (unsigned int k = 0; k < count; ++k)
+          {
+            Vector<double> column(x.begin() + k * n, x.begin() + (k + 1) * n);
+            homogeneous_constraints.distribute(column);
+            for (unsigned int i = 0; i < m; ++i)
+              result(i, first + k) = column(dofs[i]);
           }
       }
+    return result;
+  }
 
-    ErrorNorms errors;
-    errors.displacement = std::sqrt(u_error2);
-    errors.stress       = std::sqrt(s_error2);
-    errors.displacement_relative =
-      u_norm2 > 0. ? std::sqrt(u_error2 / u_norm2) : errors.displacement;
-    errors.stress_relative =
-      s_norm2 > 0. ? std::sqrt(s_error2 / s_norm2) : errors.stress;
-    return errors;
+
+
+  template <int dim>
+  std::vector<double>
+  Block<dim>::external_load_resultant() const
+  {
+    std::vector<double> result(free_modes.size());
+    for (unsigned int a = 0; a < free_modes.size(); ++a)
+      result[a] = free_modes[a] * external_load;
+    return result;
+  }
+
+
+
+  template <int dim>
+  const std::vector<Vector<double>> &
+  Block<dim>::floating_modes() const
+  {
+    return free_modes;
+  }
+
+
+
+  template <int dim>
+  const std::vector<types::global_dof_index> &
+  Block<dim>::pinned_dofs() const
+  {
+    return pins;
+  }
+
+
+
+  template <int dim>
+  std::vector<Point<dim>>
+  Block<dim>::support_points() const
+  {
+    std::vector<Point<dim>> points(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+    return points;
   }
 
 
@@ -383,22 +568,28 @@ namespace mbfem
 
   template <int dim>
   std::vector<Vector<double>>
-  Block<dim>::free_rigid_body_modes(
-    const BoundaryConditions<dim> &boundary_conditions) const
+  Block<dim>::free_rigid_body_modes() const
   {
     const std::vector<Vector<double>> modes   = rigid_body_modes();
     const unsigned int                n_modes = modes.size();
 
-    // G = A^T A, with A the modes restricted to the prescribed DoFs: a mode
-    // is held iff it moves some prescribed DoF, i.e. G's null space is the
-    // set of free modes.
+    // G = A^T A, with A the constraint equations of the supports applied to
+    // the modes (a prescribed DoF: m_i = 0; a platen node: m_i - m_master =
+    // 0): the free modes are G's null space.
     LAPACKFullMatrix<double> gram(n_modes, n_modes);
-    for (const auto &[id, mask] : boundary_conditions.dirichlet)
-      for (const auto i :
-           DoFTools::extract_boundary_dofs(dof_handler, mask, {id}))
+    std::vector<double>      equation(n_modes);
+    for (const auto &line : physical_constraints.get_lines())
+      {
+        for (unsigned int a = 0; a < n_modes; ++a)
+          {
+            equation[a] = modes[a](line.index);
+            for (const auto &[j, weight] : line.entries)
+              equation[a] -= weight * modes[a](j);
+          }
         for (unsigned int a = 0; a < n_modes; ++a)
           for (unsigned int b = 0; b < n_modes; ++b)
-            gram(a, b) += modes[a](i) * modes[b](i);
+            gram(a, b) += equation[a] * equation[b];
+      }
 
     // Mode values are of unit order, so a held mode has an eigenvalue of
     // order one or more (one prescribed DoF at distance 1e-4 of the block
@@ -475,6 +666,67 @@ namespace mbfem
           description += (dim == 2 ? names_2d[a] : names_3d[a]);
         }
     return description;
+  }
+
+
+
+  template <int dim>
+  ErrorNorms
+  Block<dim>::compute_errors(const Function<dim> &exact_displacement,
+                             const Function<dim> &exact_stress) const
+  {
+    AssertDimension(exact_displacement.n_components, dim);
+    AssertDimension(exact_stress.n_components, dim * dim);
+
+    const QGauss<dim>                    quadrature(fe.degree + 3);
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<Tensor<1, dim>>          u(quadrature.size());
+    std::vector<SymmetricTensor<2, dim>> eps(quadrature.size());
+    Vector<double>                       u_exact(dim);
+    Vector<double>                       sigma_exact(dim * dim);
+
+    double u_error2 = 0., u_norm2 = 0., s_error2 = 0., s_norm2 = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_values(solution, u);
+        fe_values[displacement].get_function_symmetric_gradients(solution, eps);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Point<dim> &x = fe_values.quadrature_point(q);
+            exact_displacement.vector_value(x, u_exact);
+            exact_stress.vector_value(x, sigma_exact);
+            const SymmetricTensor<2, dim> sigma = material.stress(eps[q]);
+            const double                  JxW   = fe_values.JxW(q);
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                u_error2 +=
+                  Utilities::fixed_power<2>(u[q][i] - u_exact[i]) * JxW;
+                u_norm2 += Utilities::fixed_power<2>(u_exact[i]) * JxW;
+                for (unsigned int j = 0; j < dim; ++j)
+                  {
+                    const double s = sigma_exact[i * dim + j];
+                    s_error2 +=
+                      Utilities::fixed_power<2>(sigma[i][j] - s) * JxW;
+                    s_norm2 += s * s * JxW;
+                  }
+              }
+          }
+      }
+
+    ErrorNorms errors;
+    errors.displacement = std::sqrt(u_error2);
+    errors.stress       = std::sqrt(s_error2);
+    errors.displacement_relative =
+      u_norm2 > 0. ? std::sqrt(u_error2 / u_norm2) : errors.displacement;
+    errors.stress_relative =
+      s_norm2 > 0. ? std::sqrt(s_error2 / s_norm2) : errors.stress;
+    return errors;
   }
 
 

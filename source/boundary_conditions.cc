@@ -32,6 +32,29 @@ namespace mbfem
       prm.leave_subsection();
 
       prm.declare_entry(
+        "Point supports",
+        "",
+        Patterns::Anything(),
+        "Supports at single nodes, as 'x,y(,z): components' separated by "
+        "';', e.g. '0,-16: x' holds the node at (0,-16) in x. The node must "
+        "be a support point of the mesh (within 1e-6 of the block size). "
+        "The displacement is zero there.");
+      prm.declare_entry(
+        "Rigid platen boundary ids",
+        "",
+        Patterns::Map(Patterns::Integer(0),
+                      Patterns::Selection("x|y|z"),
+                      0,
+                      Patterns::Map::max_int_value,
+                      ",",
+                      ":"),
+        "Faces that carry a rigid loading platen, as 'id: component', e.g. "
+        "'5: y': every node of boundary 5 has the same y displacement, so "
+        "the face translates but cannot rotate, as under a stiff loading "
+        "plate; the platen carries the moment of the loads applied to that "
+        "face (tractions on it are summed onto the platen).");
+
+      prm.declare_entry(
         "Traction boundary ids",
         "",
         Patterns::List(Patterns::Integer(0, 255)),
@@ -60,6 +83,37 @@ namespace mbfem
       dirichlet = parse_component_map<dim>(
         prm.get("Prescribed displacement boundary ids"),
         "Boundary conditions/Prescribed displacement boundary ids");
+
+      rigid_platens.clear();
+      for (const auto &[id, mask] : parse_component_map<dim>(
+             prm.get("Rigid platen boundary ids"),
+             "Boundary conditions/Rigid platen boundary ids"))
+        for (unsigned int c = 0; c < dim; ++c)
+          if (mask[c])
+            rigid_platens[id] = c;
+
+      point_supports.clear();
+      for (const auto &entry :
+           Utilities::split_string_list(prm.get("Point supports"), ';'))
+        {
+          const std::vector<std::string> parts =
+            Utilities::split_string_list(entry, ':');
+          const std::string where = "Boundary conditions/Point supports";
+          AssertThrow(parts.size() == 2,
+                      ExcMessage("'" + where + "': cannot read '" + entry +
+                                 "'; write 'x,y: components'."));
+          const std::vector<double> x = Utilities::string_to_double(
+            Utilities::split_string_list(parts[0], ','));
+          AssertThrow(x.size() == dim,
+                      ExcMessage("'" + where + "': '" + parts[0] +
+                                 "' is not a point in " + std::to_string(dim) +
+                                 "D."));
+          Point<dim> point;
+          for (unsigned int d = 0; d < dim; ++d)
+            point[d] = x[d];
+          const auto masks = parse_component_map<dim>("0: " + parts[1], where);
+          point_supports.emplace_back(point, masks.begin()->second);
+        }
 
       traction_boundaries.clear();
       for (const int id : Utilities::string_to_int(
@@ -109,6 +163,8 @@ namespace mbfem
       check(id, "Prescribed displacement boundary ids");
     for (const auto id : traction_boundaries)
       check(id, "Traction boundary ids");
+    for (const auto &[id, component] : rigid_platens)
+      check(id, "Rigid platen boundary ids");
   }
 
 

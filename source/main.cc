@@ -4,7 +4,7 @@
 //   mbfem FILE.prm              run the file (.prm or .json)
 //   mbfem --print-parameters    every parameter with documentation
 
-#include <mbfem/elastic_problem.h>
+#include <mbfem/multibody_problem.h>
 #include <mbfem/order_study.h>
 #include <mbfem/parameters.h>
 
@@ -42,7 +42,7 @@ namespace
     if (parameters.run.mode == "order study")
       mbfem::OrderStudy<dim>(parameters, pcout).run();
     else
-      mbfem::ElasticProblem<dim>(parameters, pcout).run();
+      mbfem::MultiBodyProblem<dim>(parameters, pcout).run();
   }
 } // namespace
 

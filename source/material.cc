@@ -1,5 +1,7 @@
 #include <mbfem/material.h>
 
+#include <deal.II/base/utilities.h>
+
 #include <algorithm>
 #include <sstream>
 
@@ -37,6 +39,14 @@ namespace mbfem
         Patterns::Double(0.),
         "Weight per unit volume (e.g. 24e3 N/m^3 for rock). Gravity acts in "
         "-y in 2D and -z in 3D, in addition to any body force function.");
+      prm.declare_entry(
+        "Block materials",
+        "",
+        Patterns::Anything(),
+        "Materials of individual blocks (material ids of the mesh), as "
+        "'id: E nu [unit weight]' separated by ';', e.g. '1: 20e9 0.25 "
+        "24e3; 2: 30e9 0.2 24e3'. If given, every block must be listed; if "
+        "empty, every block takes the values above.");
     }
     prm.leave_subsection();
   }
@@ -54,6 +64,41 @@ namespace mbfem
     }
     prm.leave_subsection();
     check("subsection Material");
+  }
+
+
+
+  std::map<types::material_id, Material>
+  Material::parse_block_materials(ParameterHandler &prm)
+  {
+    std::map<types::material_id, Material> materials;
+    prm.enter_subsection("Material");
+    const std::string text = prm.get("Block materials");
+    prm.leave_subsection();
+    for (const auto &entry : Utilities::split_string_list(text, ';'))
+      {
+        const auto parts = Utilities::split_string_list(entry, ':');
+        AssertThrow(parts.size() == 2,
+                    ExcMessage("Material/Block materials: cannot read '" +
+                               entry + "'; write 'id: E nu [unit weight]'."));
+        std::istringstream  in(parts[1]);
+        std::vector<double> values;
+        double              value;
+        while (in >> value)
+          values.push_back(value);
+        AssertThrow((values.size() == 2 || values.size() == 3) && in.eof(),
+                    ExcMessage("Material/Block materials: '" + entry +
+                               "' needs E, nu and optionally the unit "
+                               "weight, as numbers."));
+        const int id = Utilities::string_to_int(parts[0]);
+        Material  material;
+        material.youngs_modulus = values[0];
+        material.poissons_ratio = values[1];
+        material.unit_weight    = (values.size() == 3 ? values[2] : 0.);
+        material.check("Material/Block materials, block " + std::to_string(id));
+        materials[id] = material;
+      }
+    return materials;
   }
 
 

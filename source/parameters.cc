@@ -53,6 +53,7 @@ namespace mbfem
     ExactSolution<dim>::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
     OrderStudyParameters::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
   }
 
 
@@ -66,12 +67,14 @@ namespace mbfem
     mesh.parse_parameters(prm, input_folder);
     discretisation.parse_parameters(prm);
     material.parse_parameters(prm);
+    block_materials = Material::parse_block_materials(prm);
     linear_solver.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm);
     load_history.parse_parameters(prm);
     exact_solution.parse_parameters(prm);
     output.parse_parameters(prm);
     order_study.parse_parameters(prm);
+    contact.parse_parameters(prm);
 
     AssertThrow(run.mode != "order study" || exact_solution.enabled,
                 ExcMessage("Mode = order study measures errors: set 'Exact "

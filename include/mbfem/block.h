@@ -57,6 +57,13 @@ namespace mbfem
    * Prescribed displacements may change with pseudo-time without a new
    * factorisation: the stiffness is assembled with the constrained rows and
    * columns removed, and each load vector carries the lifting -K u_D.
+   *
+   * A block whose supports leave rigid-body modes free (a floating block,
+   * paper eqs. 5-10) is pinned at just enough degrees of freedom to remove
+   * them: its flexibility is that of the pinned block, and the free modes
+   * are returned by floating_modes() for the rigid-body unknowns and the
+   * equilibrium equations of the contact solver. The pins carry no force
+   * once the block is in equilibrium.
    */
   template <int dim>
   class Block
@@ -64,9 +71,13 @@ namespace mbfem
   public:
     Block(const Material                 &material,
           const DiscretisationParameters &discretisation,
-          const std::string              &solver_package);
+          const std::string              &solver_package,
+          const types::material_id        id = 0);
 
-    /** Distributes DoFs on triangulation (filled by the caller). */
+    /**
+     * Distributes DoFs on triangulation (filled by the caller), builds the
+     * constraints, finds the free rigid-body modes and pins them.
+     */
     void
     setup_system(const BoundaryConditions<dim> &boundary_conditions);
 
@@ -81,18 +92,48 @@ namespace mbfem
     assemble_load(BoundaryConditions<dim> &boundary_conditions,
                   const double             time);
 
-    /** solution = K^{-1} load, with the prescribed values filled in. */
+    /**
+     * Adds point forces at DoFs (contact forces) to the current load; they
+     * go through the constraints, so a force on a platen node loads the
+     * platen.
+     */
     void
-    solve();
+    add_point_forces(const std::vector<types::global_dof_index> &dofs,
+                     const std::vector<double>                  &forces);
 
     /**
-     * L2 norms of u - u_exact and sigma - sigma_exact (the latter a function
-     * with dim*dim components, row by row), each also relative to the norm
-     * of the exact field.
+     * solution = K^{-1} load, with the prescribed values filled in, plus
+     * the rigid-body motion sum_i alpha_i floating_modes()[i] if given.
      */
-    ErrorNorms
-    compute_errors(const Function<dim> &exact_displacement,
-                   const Function<dim> &exact_stress) const;
+    void
+    solve(const std::vector<double> &alpha = {});
+
+    /**
+     * Displacements at @p dofs under a unit force at each of @p dofs in
+     * turn: the block's contact flexibility (paper eq. 2, C = K^{-1}
+     * restricted to contact DoFs), from one factorisation and blocks of
+     * right-hand sides. Symmetric.
+     */
+    FullMatrix<double>
+    flexibility(const std::vector<types::global_dof_index> &dofs) const;
+
+    /**
+     * Virtual work of the external load of the last assemble_load() in each
+     * floating mode: the paper's F_e. Zero for a held block.
+     */
+    std::vector<double>
+    external_load_resultant() const;
+
+    /**
+     * The free rigid-body modes as displacement vectors (unit order), zero
+     * at every prescribed DoF; empty for a held block.
+     */
+    const std::vector<Vector<double>> &
+    floating_modes() const;
+
+    /** The DoFs pinned to remove the floating modes. */
+    const std::vector<types::global_dof_index> &
+    pinned_dofs() const;
 
     /**
      * The rigid-body modes of the block as displacement vectors: the dim
@@ -104,19 +145,26 @@ namespace mbfem
     rigid_body_modes() const;
 
     /**
-     * The combinations of rigid_body_modes() that the prescribed
-     * displacements of @p boundary_conditions leave free, one coefficient
-     * vector each; empty for a block that is held. Without supports a block
-     * has all of them free (3 in 2D, 6 in 3D): the paper's floating block,
-     * whose stiffness is singular.
+     * The combinations of rigid_body_modes() that the supports (prescribed
+     * displacements, point supports, platens) leave free, one coefficient
+     * vector each in reduced row-echelon form; empty for a held block.
+     * Without supports all are free (3 in 2D, 6 in 3D).
      */
     std::vector<Vector<double>>
-    free_rigid_body_modes(
-      const BoundaryConditions<dim> &boundary_conditions) const;
+    free_rigid_body_modes() const;
 
     /** "translation x", "rotation about z", ... for messages. */
     static std::string
     describe_rigid_body_mode(const Vector<double> &coefficients);
+
+    /**
+     * L2 norms of u - u_exact and sigma - sigma_exact (the latter a function
+     * with dim*dim components, row by row), each also relative to the norm
+     * of the exact field.
+     */
+    ErrorNorms
+    compute_errors(const Function<dim> &exact_displacement,
+                   const Function<dim> &exact_stress) const;
 
     /** Largest displacement magnitude over the support points. */
     double
@@ -129,11 +177,20 @@ namespace mbfem
     types::global_dof_index
     n_dofs() const;
 
-    Triangulation<dim>  triangulation;
-    const Material      material;
-    const FESystem<dim> fe;
-    const MappingQ<dim> mapping;
-    DoFHandler<dim>     dof_handler;
+    /** "block 2" (the material id), for messages. */
+    std::string
+    name() const;
+
+    /** Support point of every DoF (with the mapping). */
+    std::vector<Point<dim>>
+    support_points() const;
+
+    const types::material_id id;
+    Triangulation<dim>       triangulation;
+    const Material           material;
+    const FESystem<dim>      fe;
+    const MappingQ<dim>      mapping;
+    DoFHandler<dim>          dof_handler;
 
     Vector<double> solution;
 
@@ -146,14 +203,27 @@ namespace mbfem
     cell_matrix(const FEValues<dim> &fe_values,
                 FullMatrix<double>  &matrix) const;
 
-    /** Hanging-node and Dirichlet constraints, values at the set time. */
+    /**
+     * Physical constraints (hanging nodes, prescribed displacements with
+     * their values at the functions' current time, point supports, platens)
+     * and then the pins.
+     */
     void
     make_constraints(const BoundaryConditions<dim> &boundary_conditions);
 
-    AffineConstraints<double>      constraints;
-    TrilinosWrappers::SparseMatrix stiffness;
-    DirectSolver                   direct_solver;
-    Vector<double>                 load;
+    /** Chooses pinned_dofs so that they remove exactly the free modes. */
+    void
+    choose_pins();
+
+    AffineConstraints<double>            physical_constraints;
+    AffineConstraints<double>            constraints;
+    AffineConstraints<double>            homogeneous_constraints;
+    std::vector<Vector<double>>          free_modes;
+    std::vector<types::global_dof_index> pins;
+    TrilinosWrappers::SparseMatrix       stiffness;
+    DirectSolver                         direct_solver;
+    Vector<double>                       load;
+    Vector<double>                       external_load;
   };
 } // namespace mbfem
 

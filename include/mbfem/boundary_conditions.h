@@ -3,12 +3,15 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
+#include <deal.II/base/point.h>
 #include <deal.II/fe/component_mask.h>
 
 #include <map>
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace mbfem
 {
@@ -45,6 +48,17 @@ namespace mbfem
     std::map<types::boundary_id, ComponentMask> dirichlet;
 
     std::set<types::boundary_id> traction_boundaries;
+
+    /**
+     * Rigid loading platens: on each boundary id, all nodes share one
+     * displacement component (normally the face normal), so the face
+     * translates without rotating, as under a stiff loading plate. The
+     * moment of the loads applied through it is carried by the platen.
+     */
+    std::map<types::boundary_id, unsigned int> rigid_platens;
+
+    /** Supports at single points: the node at the point, given components. */
+    std::vector<std::pair<Point<dim>, ComponentMask>> point_supports;
 
     std::shared_ptr<Functions::ParsedFunction<dim>> prescribed_displacement;
     std::shared_ptr<Functions::ParsedFunction<dim>> traction;

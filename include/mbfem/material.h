@@ -3,8 +3,10 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/types.h>
 
 #include <array>
+#include <map>
 #include <string>
 
 namespace mbfem
@@ -56,6 +58,13 @@ namespace mbfem
 
     /** Weight per unit volume; gravity acts in -y (2D) or -z (3D). */
     double unit_weight = 0.;
+
+    /**
+     * "Material/Block materials": material id -> material, for meshes whose
+     * blocks differ; empty when every block takes the default.
+     */
+    static std::map<types::material_id, Material>
+    parse_block_materials(ParameterHandler &prm);
 
   private:
     void

@@ -4,8 +4,10 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 
+#include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace mbfem
 {
@@ -34,7 +36,41 @@ namespace mbfem
     std::string  generator_name;
     std::string  generator_arguments;
     unsigned int initial_refinement = 0;
+
+    /** Expression of x, y(, z) giving the block of the cell at that centre. */
+    std::string block_id_function;
+
+    /** Boundary id -> centre of the circle (sphere) that face lies on. */
+    std::map<types::boundary_id, std::vector<double>> circular_boundaries;
   };
+
+  /**
+   * Boundary id given, in a block's own triangulation, to the faces it
+   * shares with block @p neighbour in the mesh: the two sides of a contact
+   * interface declared by blocks ("blocks 1:2").
+   */
+  inline types::boundary_id
+  interface_boundary_id(const types::material_id neighbour)
+  {
+    return 10000 + neighbour;
+  }
+
+  /** The material ids of the mesh, i.e. its blocks, in increasing order. */
+  template <int dim>
+  std::vector<types::material_id>
+  block_ids(const Triangulation<dim> &mesh);
+
+  /**
+   * Copies the active cells of @p mesh with material id @p id into
+   * @p block as its coarse mesh, with their manifolds. Faces on the boundary
+   * of @p mesh keep their boundary ids; faces shared with a cell of another
+   * block get interface_boundary_id(that block).
+   */
+  template <int dim>
+  void
+  extract_block(const Triangulation<dim> &mesh,
+                const types::material_id  id,
+                Triangulation<dim>       &block);
 
   /** Builds the mesh described by @p parameters into @p triangulation. */
   template <int dim>

@@ -3,6 +3,7 @@
 
 #include <mbfem/block.h>
 #include <mbfem/boundary_conditions.h>
+#include <mbfem/contact_interface.h>
 #include <mbfem/direct_solver.h>
 #include <mbfem/exact_solution.h>
 #include <mbfem/load_history.h>
@@ -50,16 +51,18 @@ namespace mbfem
     void
     parse_parameters(ParameterHandler &prm, const std::string &input_folder);
 
-    RunParameters            run;
-    MeshParameters           mesh;
-    DiscretisationParameters discretisation;
-    Material                 material;
-    DirectSolver::Parameters linear_solver;
-    BoundaryConditions<dim>  boundary_conditions;
-    LoadHistory              load_history;
-    ExactSolution<dim>       exact_solution;
-    OutputParameters         output;
-    OrderStudyParameters     order_study;
+    RunParameters                          run;
+    MeshParameters                         mesh;
+    DiscretisationParameters               discretisation;
+    Material                               material;
+    std::map<types::material_id, Material> block_materials;
+    DirectSolver::Parameters               linear_solver;
+    BoundaryConditions<dim>                boundary_conditions;
+    LoadHistory                            load_history;
+    ExactSolution<dim>                     exact_solution;
+    OutputParameters                       output;
+    OrderStudyParameters                   order_study;
+    ContactParameters                      contact;
   };
 
   /**

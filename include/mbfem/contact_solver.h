@@ -1,0 +1,172 @@
+#ifndef mbfem_contact_solver_h
+#define mbfem_contact_solver_h
+
+#include <mbfem/block.h>
+#include <mbfem/contact_interface.h>
+
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/lac/full_matrix.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /** The contact states of the paper's Table 1. */
+  enum class ContactState : unsigned char
+  {
+    stick,
+    slip,
+    open
+  };
+
+  std::string
+  to_string(const ContactState state);
+
+  /**
+   * The interface system of the multi-body method (paper eqs. 7-10, 15 and
+   * Table 1), generalised to any number of blocks and to 3D.
+   *
+   * With r_k the force of pair k on its block b (and -r_k on block a), the
+   * relative displacement of the pairs is
+   *
+   *   d = C_a r + Delta_F + P alpha,
+   *
+   * C_a assembled from the blocks' contact flexibilities, Delta_F the
+   * relative displacement under the external loads alone, and alpha the
+   * amplitudes of the floating blocks' free modes, whose equilibrium closes
+   * the system: P^T r = -F_e. Everything is written in each pair's frame
+   * (normal, tangents). Each state gives its equations (stick: no normal
+   * gap, no tangential increment; slip: no normal gap, |r_T| = c A + mu r_N
+   * against the slip; open: r = 0); the states are iterated within a load
+   * increment until every pair satisfies its check.
+   */
+  template <int dim>
+  class ContactSolver
+  {
+  public:
+    ContactSolver(std::vector<ContactPair<dim>> pairs,
+                  const unsigned int            max_iterations);
+
+    /** The dense flexibility C_a and coupling P, from every block. */
+    void
+    compute_flexibility(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
+
+    /**
+     * Solves one load increment. Each block's solution must hold its
+     * response u_F to the external load of this increment (and its
+     * external_load_resultant() that load's F_e). Returns the number of
+     * state iterations; throws with a message naming blocks or pairs when
+     * the increment has no consistent solution.
+     */
+    unsigned int
+    solve_increment(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+                    const unsigned int                              increment);
+
+    /** Accepts the converged increment as the start of the next one. */
+    void
+    commit();
+
+    /** Contact forces on block @p b as (DoF, force) lists. */
+    void
+    forces_on_block(const unsigned int                    b,
+                    std::vector<types::global_dof_index> &dofs,
+                    std::vector<double>                  &forces) const;
+
+    /** Amplitudes of block @p b's floating modes. */
+    std::vector<double>
+    floating_amplitudes(const unsigned int b) const;
+
+    const std::vector<ContactPair<dim>> &
+    pairs() const;
+
+    /** Force on block b of pair k in its frame: (r_N, r_T...). */
+    Tensor<1, dim>
+    local_force(const unsigned int k) const;
+
+    /** Force on block b of pair k in global components. */
+    Tensor<1, dim>
+    force(const unsigned int k) const;
+
+    /** Normal gap g0 + d.n (>= 0). */
+    double
+    gap(const unsigned int k) const;
+
+    /** Tangential relative displacement (accumulated slip) in the frame. */
+    Tensor<1, dim>
+    slip(const unsigned int k) const;
+
+    ContactState
+    state(const unsigned int k) const;
+
+    bool
+    broken(const unsigned int k) const;
+
+    /** Count of pairs in @p state. */
+    unsigned int
+    count(const ContactState state) const;
+
+  private:
+    struct Trial
+    {
+      std::vector<ContactState>   state;
+      std::vector<bool>           broken;
+      std::vector<bool>           tensile_slip; // slip with r_N < 0: no mu
+      std::vector<Tensor<1, dim>> slip_direction; // local, tangential
+    };
+
+    /** Assembles and solves the system of @p trial into rho, alpha. */
+    bool
+    solve_trial(const Trial &trial, Vector<double> &solution) const;
+
+    /** Checks every pair; returns the new trial and violations. */
+    Trial
+    check(const Trial          &trial,
+          const Vector<double> &solution,
+          std::vector<double>  &violation,
+          double               &direction_change) const;
+
+    /** Message for a singular system: which block is not held. */
+    std::string
+    diagnose_singular(const Trial &trial) const;
+
+    std::string
+    signature(const Trial &trial) const;
+
+    const std::vector<ContactPair<dim>> contact_pairs;
+    const unsigned int                  max_iterations;
+    const unsigned int                  n_pairs;
+
+    /** Blocks' floating modes: offset of each block's alphas, and count. */
+    std::vector<unsigned int> alpha_offset;
+    std::vector<unsigned int> n_alpha;
+    unsigned int              n_alpha_total = 0;
+    std::vector<std::string>  block_names;
+    std::vector<std::vector<Vector<double>>> mode_coefficients;
+
+    /** In the pairs' frames: C_hat = R C_a R^T, P_hat = R P. */
+    FullMatrix<double> flexibility;
+    FullMatrix<double> coupling;
+    /** Mean diagonal of flexibility: scales the forces in the system. */
+    double flexibility_scale = 1.;
+    /** Directions in which both nodes are held by supports. */
+    std::vector<std::array<bool, dim>> held;
+
+    /** Data of the current increment. */
+    Vector<double>      external_displacement; // R Delta_F
+    std::vector<double> external_resultant;    // F_e, per alpha
+
+    /** Converged state and the solution of the current increment. */
+    Trial                       committed;
+    std::vector<Tensor<1, dim>> committed_displacement; // local d
+    Trial                       current;
+    Vector<double>              current_solution;
+    std::vector<Tensor<1, dim>> current_displacement;
+  };
+} // namespace mbfem
+
+#endif

@@ -1,0 +1,490 @@
+#include <mbfem/multibody_problem.h>
+#include <mbfem/parameters.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace mbfem
+{
+  template <int dim>
+  MultiBodyProblem<dim>::MultiBodyProblem(Parameters<dim>    &parameters,
+                                          ConditionalOStream &pcout)
+    : parameters(parameters)
+    , pcout(pcout)
+    // Summary printed at the end of a run that finished, not on the way
+    // out of one that failed.
+    , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+  {}
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::make_blocks()
+  {
+    TimerOutput::Scope t(timer, "mesh");
+    Triangulation<dim> mesh;
+    create_mesh(parameters.mesh, mesh);
+
+    const auto materials = parameters.block_materials;
+    for (const auto id : block_ids(mesh))
+      {
+        Material material = parameters.material;
+        if (!materials.empty())
+          {
+            AssertThrow(materials.count(id) == 1,
+                        ExcMessage("Block " + std::to_string(id) +
+                                   " (material id " + std::to_string(id) +
+                                   " in the mesh) has no material: list it "
+                                   "in 'Material/Block materials'."));
+            material = materials.at(id);
+          }
+        blocks.push_back(
+          std::make_unique<Block<dim>>(material,
+                                       parameters.discretisation,
+                                       parameters.linear_solver.package,
+                                       id));
+        extract_block(mesh, id, blocks.back()->triangulation);
+      }
+    for (const auto &[id, material] : materials)
+      AssertThrow(std::any_of(blocks.begin(),
+                              blocks.end(),
+                              [id = id](const auto &b) { return b->id == id; }),
+                  ExcMessage("Material/Block materials lists block " +
+                             std::to_string(id) +
+                             ", which is not a material id of the mesh."));
+
+    std::set<types::boundary_id> present;
+    for (const auto &block : blocks)
+      for (const auto id : boundary_ids_of(block->triangulation))
+        present.insert(id);
+    parameters.boundary_conditions.check_boundary_ids(present);
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::setup_blocks()
+  {
+    parameters.boundary_conditions.set_time(0.);
+    for (const auto &block : blocks)
+      {
+        {
+          TimerOutput::Scope t(timer, "assembly");
+          block->setup_system(parameters.boundary_conditions);
+          block->assemble_stiffness();
+        }
+        {
+          TimerOutput::Scope t(timer, "factorisation");
+          block->factorize();
+        }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::run()
+  {
+    make_blocks();
+    setup_blocks();
+
+    const auto &first = *blocks.front();
+    pcout << "mbfem: " << (blocks.size() == 1 ? "one elastic block" :
+                                                std::to_string(blocks.size()) +
+                                                  " blocks")
+          << ", " << dim << "D" << (dim == 2 ? " plane strain" : "")
+          << ", FE_Q(" << first.fe.degree << ")^" << dim << ", MappingQ("
+          << first.mapping.get_degree() << ")\n";
+    for (const auto &block : blocks)
+      {
+        pcout << (blocks.size() == 1 ? "" : "  " + block->name() + ":\n")
+              << "  cells: " << block->triangulation.n_active_cells()
+              << ", degrees of freedom: " << block->n_dofs() << "\n"
+              << "  E = " << block->material.youngs_modulus
+              << ", nu = " << block->material.poissons_ratio << "\n";
+        const auto free_modes = block->free_rigid_body_modes();
+        if (!free_modes.empty())
+          {
+            pcout << "  floating: free rigid-body modes";
+            for (const auto &mode : free_modes)
+              pcout << " [" << Block<dim>::describe_rigid_body_mode(mode) << "]";
+            pcout << ", held by contact\n";
+          }
+      }
+
+    std::vector<ContactPair<dim>> pairs;
+    if (!parameters.contact.interfaces.empty())
+      pairs = find_contact_pairs(blocks, parameters.contact, pcout);
+
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      {
+        const auto free_modes = blocks[b]->free_rigid_body_modes();
+        std::string description;
+        for (const auto &mode : free_modes)
+          description += " [" + Block<dim>::describe_rigid_body_mode(mode) + "]";
+        const bool has_pairs =
+          std::any_of(pairs.begin(), pairs.end(), [b](const auto &pair) {
+            return pair.block_a == b || pair.block_b == b;
+          });
+        AssertThrow(free_modes.empty() || has_pairs,
+                    ExcMessage(
+                      blocks[b]->name() + " is not held: its supports " +
+                      "('Boundary conditions/...') leave " +
+                      std::to_string(free_modes.size()) +
+                      " rigid-body mode(s) free," + description +
+                      ", and it has no contact pair that could hold it. "
+                      "Prescribe the displacement components that remove "
+                      "them, or declare its interfaces in 'Contact/Interfaces'."));
+      }
+
+    if (!pairs.empty())
+      {
+        TimerOutput::Scope t(timer, "flexibility");
+        contact = std::make_unique<ContactSolver<dim>>(
+          pairs, parameters.contact.max_iterations);
+        contact->compute_flexibility(blocks);
+      }
+
+    std::filesystem::create_directories(parameters.output.directory);
+    std::unique_ptr<OutputWriter> writer;
+    std::unique_ptr<OutputWriter> pair_writer;
+    if (parameters.output.write_vtu)
+      {
+        writer = std::make_unique<OutputWriter>(parameters.output);
+        if (contact)
+          {
+            OutputParameters pair_output = parameters.output;
+            pair_output.base_name += "-pairs";
+            pair_writer = std::make_unique<OutputWriter>(pair_output);
+          }
+      }
+
+    const LoadHistory &history = parameters.load_history;
+    for (unsigned int k = 1; k <= history.n_increments; ++k)
+      {
+        const double time       = history.time(k);
+        unsigned int iterations = 0;
+        {
+          TimerOutput::Scope t(timer, "load response");
+          for (const auto &block : blocks)
+            {
+              block->assemble_load(parameters.boundary_conditions, time);
+              block->solve();
+            }
+        }
+        if (contact)
+          {
+            {
+              TimerOutput::Scope t(timer, "contact iterations");
+              iterations = contact->solve_increment(blocks, k);
+            }
+            TimerOutput::Scope t(timer, "field recovery");
+            for (unsigned int b = 0; b < blocks.size(); ++b)
+              {
+                std::vector<types::global_dof_index> dofs;
+                std::vector<double>                  forces;
+                contact->forces_on_block(b, dofs, forces);
+                blocks[b]->add_point_forces(dofs, forces);
+                blocks[b]->solve(contact->floating_amplitudes(b));
+              }
+            contact->commit();
+          }
+        for (const auto &block : blocks)
+          AssertThrow(std::isfinite(block->solution.l2_norm()),
+                      ExcMessage(
+                        "Increment " + std::to_string(k) + " (t = " +
+                        std::to_string(time) + "): the displacement of " +
+                        block->name() +
+                        " is not finite. A load or prescribed displacement "
+                        "function gives NaN or inf at this time. Results of "
+                        "the earlier increments are in " +
+                        parameters.output.directory + "."));
+
+        print_increment(k, time, iterations);
+        if (contact)
+          write_pairs(k, time);
+        if (writer)
+          {
+            TimerOutput::Scope       t(timer, "output");
+            std::vector<std::string> files;
+            for (unsigned int b = 0; b < blocks.size(); ++b)
+              files.push_back(writer->write_block(*blocks[b], blocks[b]->id, k));
+            writer->add_step(time, files);
+            if (pair_writer)
+              pair_writer->add_step(time, {write_pairs(k, time)});
+          }
+      }
+
+    if (parameters.exact_solution.enabled)
+      print_errors(history.time(history.n_increments));
+
+    if (writer)
+      pcout << "  wrote " << history.n_increments << " VTU file(s)"
+            << (blocks.size() > 1 ? " per block" : "") << " indexed by "
+            << writer->pvd_file() << "\n";
+    if (contact && !parameters.run.test_mode)
+      pcout << "  contact pairs per increment in " << parameters.output.directory
+            << "/" << parameters.output.base_name << "-pairs-*.csv\n";
+    if (!parameters.run.test_mode)
+      timer.print_summary();
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_increment(const unsigned int k,
+                                         const double       time,
+                                         const unsigned int iterations) const
+  {
+    double max_u = 0., max_von_mises = 0.;
+    for (const auto &block : blocks)
+      {
+        max_u         = std::max(max_u, block->max_displacement());
+        max_von_mises = std::max(max_von_mises, block->max_von_mises_stress());
+      }
+    pcout << "  increment " << k << "/" << parameters.load_history.n_increments
+          << ", t = " << time << ": ";
+    if (contact)
+      {
+        double min_normal = 0., max_normal = 0., max_tangential = 0.,
+               max_gap = 0.;
+        for (unsigned int i = 0; i < contact->pairs().size(); ++i)
+          {
+            const Tensor<1, dim> rho  = contact->local_force(i);
+            const double         area = contact->pairs()[i].area;
+            Tensor<1, dim>       tangential = rho;
+            tangential[0]                   = 0.;
+            min_normal     = std::min(min_normal, rho[0] / area);
+            max_normal     = std::max(max_normal, rho[0] / area);
+            max_tangential = std::max(max_tangential, tangential.norm() / area);
+            max_gap        = std::max(max_gap, contact->gap(i));
+          }
+        pcout << iterations << " iteration(s), stick/slip/open "
+              << contact->count(ContactState::stick) << "/"
+              << contact->count(ContactState::slip) << "/"
+              << contact->count(ContactState::open) << ", p in ["
+              << std::scientific << std::setprecision(6) << min_normal << ", "
+              << max_normal << "], max |q| = " << max_tangential
+              << ", max gap = " << max_gap << ", ";
+      }
+    pcout << "max |u| = " << std::scientific << std::setprecision(6) << max_u
+          << ", max von Mises = " << max_von_mises << std::defaultfloat
+          << std::setprecision(6) << "\n";
+
+    // The resultant each interface transmits (force on its side b).
+    if (contact)
+      for (unsigned int i = 0; i < parameters.contact.interfaces.size(); ++i)
+        {
+          Tensor<1, dim> resultant;
+          for (unsigned int p = 0; p < contact->pairs().size(); ++p)
+            if (contact->pairs()[p].interface == i)
+              resultant += contact->force(p);
+          pcout << "    interface " << i + 1 << ": resultant force on side b ("
+                << std::scientific << std::setprecision(6);
+          for (unsigned int d = 0; d < dim; ++d)
+            pcout << (d > 0 ? ", " : "")
+                  << (std::abs(resultant[d]) < 1e-12 * resultant.norm() ?
+                        0. :
+                        resultant[d]);
+          pcout << ")" << std::defaultfloat << std::setprecision(6) << "\n";
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_errors(const double time) const
+  {
+    parameters.exact_solution.displacement->set_time(time);
+    parameters.exact_solution.stress->set_time(time);
+    double u_error2 = 0., u_norm2 = 0., s_error2 = 0., s_norm2 = 0.;
+    for (const auto &block : blocks)
+      {
+        const ErrorNorms e =
+          block->compute_errors(*parameters.exact_solution.displacement,
+                                *parameters.exact_solution.stress);
+        u_error2 += e.displacement * e.displacement;
+        s_error2 += e.stress * e.stress;
+        if (e.displacement_relative > 0.)
+          u_norm2 += std::pow(e.displacement / e.displacement_relative, 2);
+        if (e.stress_relative > 0.)
+          s_norm2 += std::pow(e.stress / e.stress_relative, 2);
+      }
+    const double u_relative = std::sqrt(u_error2 / std::max(u_norm2, 1e-300));
+    const double s_relative = std::sqrt(s_error2 / std::max(s_norm2, 1e-300));
+    pcout << "  L2 errors against the exact solution (relative): "
+          << "displacement " << std::scientific << std::setprecision(3)
+          << u_relative << ", stress " << s_relative << std::defaultfloat
+          << std::setprecision(6) << "\n";
+
+    // numdiff takes numbers within 1e-6 of each other as equal, which
+    // would let any change of a small error pass: compare logarithms.
+    // Below 1e-9 an error is round-off, whose digits vary by machine.
+    if (parameters.run.test_mode)
+      {
+        const auto log_error = [](const double e) {
+          std::ostringstream s;
+          if (e < 1e-9)
+            s << "below 1e-9";
+          else
+            s << std::fixed << std::setprecision(4) << std::log10(e);
+          return s.str();
+        };
+        pcout << "  log10 of the relative errors: displacement "
+              << log_error(u_relative) << ", stress " << log_error(s_relative)
+              << "\n";
+      }
+  }
+
+
+
+  template <int dim>
+  std::string
+  MultiBodyProblem<dim>::write_pairs(const unsigned int k,
+                                     const double       time) const
+  {
+    const auto        &pairs = contact->pairs();
+    const std::string  stem  = parameters.output.base_name + "-pairs-" +
+                             Utilities::int_to_string(k, 4);
+    const char        *axes[] = {"x", "y", "z"};
+    std::ostringstream csv;
+    csv << "# increment " << k << ", t = " << time << "\n";
+    csv << "pair,interface";
+    for (unsigned int d = 0; d < dim; ++d)
+      csv << "," << axes[d];
+    csv << ",normal_force,normal_traction";
+    for (unsigned int d = 1; d < dim; ++d)
+      csv << ",tangential_force_" << d << ",tangential_traction_" << d;
+    csv << ",gap";
+    for (unsigned int d = 1; d < dim; ++d)
+      csv << ",slip_" << d;
+    csv << ",state,broken,area,initial_gap\n";
+
+    std::ostringstream points, state, traction, gap, slip, normal;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto          &pair = pairs[i];
+        const Point<dim>     x    = 0.5 * (pair.point_a + pair.point_b);
+        const Tensor<1, dim> rho  = contact->local_force(i);
+        const Tensor<1, dim> s    = contact->slip(i);
+        char                 buffer[64];
+        csv << i << "," << pair.interface + 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            std::snprintf(buffer, sizeof(buffer), ",%.10e", x[d]);
+            csv << buffer;
+          }
+        std::snprintf(buffer, sizeof(buffer), ",%.10e,%.10e", rho[0], rho[0] / pair.area);
+        csv << buffer;
+        for (unsigned int d = 1; d < dim; ++d)
+          {
+            std::snprintf(buffer, sizeof(buffer), ",%.10e,%.10e", rho[d], rho[d] / pair.area);
+            csv << buffer;
+          }
+        std::snprintf(buffer, sizeof(buffer), ",%.10e", contact->gap(i));
+        csv << buffer;
+        for (unsigned int d = 1; d < dim; ++d)
+          {
+            std::snprintf(buffer, sizeof(buffer), ",%.10e", s[d]);
+            csv << buffer;
+          }
+        std::snprintf(buffer,
+                      sizeof(buffer),
+                      ",%.10e,%.10e",
+                      pair.area,
+                      pair.initial_gap);
+        csv << "," << to_string(contact->state(i)) << ","
+            << (contact->broken(i) ? 1 : 0) << buffer << "\n";
+
+        // VTU point data, global components.
+        const Tensor<1, dim> r = contact->force(i) / pair.area;
+        Tensor<1, dim>       slip_global;
+        for (unsigned int d = 1; d < dim; ++d)
+          slip_global += s[d] * pair.frame[d];
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            points << (d < dim ? x[d] : 0.) << " ";
+            traction << (d < dim ? r[d] : 0.) << " ";
+            slip << (d < dim ? slip_global[d] : 0.) << " ";
+            normal << (d < dim ? pair.frame[0][d] : 0.) << " ";
+          }
+        state << static_cast<int>(contact->state(i)) << " ";
+        gap << contact->gap(i) << " ";
+      }
+    write_file_atomically(parameters.output.directory + "/" + stem + ".csv",
+                          csv.str());
+
+    if (!parameters.output.write_vtu)
+      return "";
+    const unsigned int n = pairs.size();
+    std::ostringstream vtu;
+    vtu << std::setprecision(10)
+        << "<?xml version=\"1.0\"?>\n"
+           "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+           "<UnstructuredGrid><Piece NumberOfPoints=\""
+        << n << "\" NumberOfCells=\"" << n << "\">\n"
+        << "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+           "format=\"ascii\">"
+        << points.str() << "</DataArray></Points>\n<Cells>\n"
+        << "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">";
+    for (unsigned int i = 0; i < n; ++i)
+      vtu << i << " ";
+    vtu << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" "
+           "format=\"ascii\">";
+    for (unsigned int i = 0; i < n; ++i)
+      vtu << i + 1 << " ";
+    vtu << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+           "format=\"ascii\">";
+    for (unsigned int i = 0; i < n; ++i)
+      vtu << "1 "; // VTK_VERTEX
+    vtu << "</DataArray>\n</Cells>\n<PointData Scalars=\"state\">\n"
+        << "<DataArray type=\"Int32\" Name=\"state\" format=\"ascii\">"
+        << state.str() << "</DataArray>\n"
+        << "<DataArray type=\"Float64\" Name=\"traction\" "
+           "NumberOfComponents=\"3\" format=\"ascii\">"
+        << traction.str() << "</DataArray>\n"
+        << "<DataArray type=\"Float64\" Name=\"gap\" format=\"ascii\">"
+        << gap.str() << "</DataArray>\n"
+        << "<DataArray type=\"Float64\" Name=\"slip\" NumberOfComponents=\"3\" "
+           "format=\"ascii\">"
+        << slip.str() << "</DataArray>\n"
+        << "<DataArray type=\"Float64\" Name=\"normal\" "
+           "NumberOfComponents=\"3\" format=\"ascii\">"
+        << normal.str() << "</DataArray>\n"
+        << "</PointData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
+    write_file_atomically(parameters.output.directory + "/" + stem + ".vtu",
+                          vtu.str());
+    return stem + ".vtu";
+  }
+
+
+
+  template <int dim>
+  const std::vector<std::unique_ptr<Block<dim>>> &
+  MultiBodyProblem<dim>::get_blocks() const
+  {
+    return blocks;
+  }
+
+
+
+  template <int dim>
+  const ContactSolver<dim> *
+  MultiBodyProblem<dim>::get_contact() const
+  {
+    return contact.get();
+  }
+
+
+
+  template class MultiBodyProblem<2>;
+  template class MultiBodyProblem<3>;
+} // namespace mbfem
