@@ -1,11 +1,10 @@
+#include <mbfem/boundary_conditions.h>
 #include <mbfem/contact_interface.h>
 #include <mbfem/mesh.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/grid/grid_tools.h>
 
 #include <map>
@@ -56,6 +55,24 @@ namespace mbfem
         Patterns::Integer(1),
         "Most contact-state iterations (assume states, solve, check, switch) "
         "in one load increment before the run stops with a message.");
+      prm.enter_subsection("Exact traction");
+      {
+        prm.declare_entry(
+          "Compute errors",
+          "false",
+          Patterns::Bool(),
+          "2D: at the end of the run, measure the pairs' normal traction p "
+          "and tangential traction q (force / tributary area, on side b, "
+          "tangent t = (-n_y, n_x)) against the functions below, as relative "
+          "L2 errors weighted by the pairs' areas, per interface.");
+        prm.enter_subsection("Normal");
+        Functions::ParsedFunction<2>::declare_parameters(prm, 1);
+        prm.leave_subsection();
+        prm.enter_subsection("Tangential");
+        Functions::ParsedFunction<2>::declare_parameters(prm, 1);
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
     }
     prm.leave_subsection();
   }
@@ -75,8 +92,8 @@ namespace mbfem
         values.resize(n, values[0]);
       AssertThrow(values.size() == n,
                   ExcMessage("Contact/" + entry + " has " +
-                             std::to_string(values.size()) +
-                             " values for " + std::to_string(n) +
+                             std::to_string(values.size()) + " values for " +
+                             std::to_string(n) +
                              " interfaces: give one, or one per interface."));
       return values;
     }
@@ -112,7 +129,8 @@ namespace mbfem
       const auto         mu = per_interface(prm.get("Friction coefficient"),
                                     std::max(n, 1u),
                                     "Friction coefficient");
-      const auto c  = per_interface(prm.get("Cohesion"), std::max(n, 1u), "Cohesion");
+      const auto         c =
+        per_interface(prm.get("Cohesion"), std::max(n, 1u), "Cohesion");
       const auto st = per_interface(prm.get("Tensile strength"),
                                     std::max(n, 1u),
                                     "Tensile strength");
@@ -124,6 +142,19 @@ namespace mbfem
         }
       search_distance = prm.get_double("Search distance");
       max_iterations  = prm.get_integer("Maximum iterations");
+      prm.enter_subsection("Exact traction");
+      {
+        compute_traction_errors = prm.get_bool("Compute errors");
+        prm.enter_subsection("Normal");
+        exact_normal_traction =
+          parse_function<2>(prm, 1, "Contact/Exact traction/Normal");
+        prm.leave_subsection();
+        prm.enter_subsection("Tangential");
+        exact_tangential_traction =
+          parse_function<2>(prm, 1, "Contact/Exact traction/Tangential");
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
     }
     prm.leave_subsection();
   }
@@ -151,11 +182,11 @@ namespace mbfem
                   const types::boundary_id         boundary_id,
                   std::vector<InterfaceNode<dim>> &nodes)
     {
-      const auto       &fe = block.fe;
+      const auto &fe = block.fe;
       // Gauss-Lobatto points are FE_Q's support points: the quadrature
       // weight at a node is its lumped share of the face.
-      const QGaussLobatto<dim - 1> quadrature(fe.degree + 1);
-      FEFaceValues<dim>            fe_face_values(block.mapping,
+      const QGaussLobatto<dim - 1>         quadrature(fe.degree + 1);
+      FEFaceValues<dim>                    fe_face_values(block.mapping,
                                        fe,
                                        quadrature,
                                        update_values | update_JxW_values |
@@ -196,8 +227,7 @@ namespace mbfem
                         nodes.push_back(node);
                       }
                     nodes[it->second].area += fe_face_values.JxW(q);
-                    nodes[it->second].normal +=
-                      fe_face_values.normal_vector(q);
+                    nodes[it->second].normal += fe_face_values.normal_vector(q);
                   }
             }
     }
@@ -223,7 +253,7 @@ namespace mbfem
             if (std::abs(frame[0][d]) < std::abs(frame[0][axis]))
               axis = d;
           Tensor<1, dim> e;
-          e[axis]            = 1.;
+          e[axis]           = 1.;
           Tensor<1, dim> t1 = cross_product_3d(frame[0], e);
           t1 /= t1.norm();
           frame[1] = t1;
@@ -275,53 +305,75 @@ namespace mbfem
               if (!declaration.by_blocks)
                 collect_nodes(*blocks[b], b, own, side[s]);
               else if (blocks[b]->id == own)
-                collect_nodes(*blocks[b], b, interface_boundary_id(other), side[s]);
+                collect_nodes(*blocks[b],
+                              b,
+                              interface_boundary_id(other),
+                              side[s]);
             AssertThrow(!side[s].empty(),
-                        ExcMessage("Contact interface '" +
-                                   declaration.description + "': side " +
-                                   std::to_string(own) +
-                                   " has no faces in the mesh" +
-                                   (declaration.by_blocks ?
-                                      " shared with block " +
-                                        std::to_string(other) :
-                                      std::string(" with that boundary id")) +
-                                   "."));
+                        ExcMessage(
+                          "Contact interface '" + declaration.description +
+                          "': side " + std::to_string(own) +
+                          " has no faces in the mesh" +
+                          (declaration.by_blocks ?
+                             " shared with block " + std::to_string(other) :
+                             std::string(" with that boundary id")) +
+                          "."));
           }
 
-        // Nearest partner of every node on each side.
+        // Partner of every node on each side: among the nodes within the
+        // search distance, the one that faces it best, i.e. whose joining
+        // line deviates least from the common normal of the two surfaces
+        // (the bisector of the two outward normals). For coincident nodes
+        // this is the nearest one; across a gap between curved surfaces
+        // the nearest node can be a neighbour of the facing one.
+        const double reach = std::max(coincident, parameters.search_distance);
         std::vector<unsigned int> nearest[2];
         std::vector<double>       distance[2];
         for (unsigned int s = 0; s < 2; ++s)
           {
             const auto &mine   = side[s];
             const auto &theirs = side[1 - s];
-            nearest[s].resize(mine.size());
-            distance[s].resize(mine.size());
+            nearest[s].assign(mine.size(), numbers::invalid_unsigned_int);
+            distance[s].assign(mine.size(), std::numeric_limits<double>::max());
             for (unsigned int i = 0; i < mine.size(); ++i)
               {
-                double best = std::numeric_limits<double>::max();
+                double best_offset = std::numeric_limits<double>::max();
+                const Tensor<1, dim> n_i =
+                  mine[i].normal / mine[i].normal.norm();
                 for (unsigned int j = 0; j < theirs.size(); ++j)
                   {
-                    const double d = mine[i].point.distance(theirs[j].point);
-                    if (d < best)
+                    const Tensor<1, dim> d = theirs[j].point - mine[i].point;
+                    const double         length = d.norm();
+                    if (length > reach)
+                      continue;
+                    Tensor<1, dim> common =
+                      n_i - theirs[j].normal / theirs[j].normal.norm();
+                    common /= common.norm();
+                    const double offset =
+                      (length <= coincident ?
+                         0. :
+                         (d - (d * common) * common).norm());
+                    if (offset < best_offset - 1e-12 * reach ||
+                        (offset < best_offset + 1e-12 * reach &&
+                         length < distance[s][i]))
                       {
-                        best          = d;
-                        nearest[s][i] = j;
+                        best_offset    = offset;
+                        nearest[s][i]  = j;
+                        distance[s][i] = length;
                       }
                   }
-                distance[s][i] = best;
               }
           }
 
         std::vector<Point<dim>> unmatched, ambiguous;
         unsigned int            n_coincident = 0, n_gap = 0;
-        double                  total_area   = 0.;
+        double                  total_area = 0.;
         std::vector<bool>       b_used(side[1].size(), false);
         for (unsigned int i = 0; i < side[0].size(); ++i)
           {
             const unsigned int j = nearest[0][i];
             const double       d = distance[0][i];
-            if (d > std::max(coincident, parameters.search_distance))
+            if (j == numbers::invalid_unsigned_int)
               {
                 unmatched.push_back(side[0][i].point);
                 continue;
@@ -382,8 +434,8 @@ namespace mbfem
 
         pcout << "  interface " << k + 1 << " (" << declaration.description
               << "): " << n_coincident + n_gap << " pairs (" << n_coincident
-              << " coincident, " << n_gap << " with a gap), area "
-              << total_area << ", mu = " << declaration.friction_coefficient
+              << " coincident, " << n_gap << " with a gap), area " << total_area
+              << ", mu = " << declaration.friction_coefficient
               << ", c = " << declaration.cohesion
               << ", sigma_t = " << declaration.tensile_strength << "\n";
       }

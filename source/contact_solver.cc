@@ -37,9 +37,9 @@ namespace mbfem
     committed.tensile_slip.assign(n_pairs, false);
     committed.slip_direction.assign(n_pairs, Tensor<1, dim>());
     for (unsigned int k = 0; k < n_pairs; ++k)
-      committed.state[k] = (contact_pairs[k].initial_gap > 0. ?
-                              ContactState::open :
-                              ContactState::stick);
+      committed.state[k] =
+        (contact_pairs[k].initial_gap > 0. ? ContactState::open :
+                                             ContactState::stick);
     committed_displacement.assign(n_pairs, Tensor<1, dim>());
     current              = committed;
     current_displacement = committed_displacement;
@@ -74,8 +74,8 @@ namespace mbfem
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
         // The pair sides on this block: (pair, sign); b gets +r, a gets -r.
-        std::vector<std::pair<unsigned int, double>> sides;
-        std::vector<types::global_dof_index>         dofs;
+        std::vector<std::pair<unsigned int, double>>    sides;
+        std::vector<types::global_dof_index>            dofs;
         std::map<types::global_dof_index, unsigned int> index_of;
         for (unsigned int k = 0; k < n_pairs; ++k)
           for (const int sign : {-1, 1})
@@ -95,8 +95,8 @@ namespace mbfem
         const auto              &modes   = blocks[b]->floating_modes();
         for (const auto &[k, sign_k] : sides)
           {
-            const auto &dofs_k = (sign_k < 0 ? contact_pairs[k].dofs_a :
-                                               contact_pairs[k].dofs_b);
+            const auto &dofs_k =
+              (sign_k < 0 ? contact_pairs[k].dofs_a : contact_pairs[k].dofs_b);
             for (const auto &[l, sign_l] : sides)
               {
                 const auto &dofs_l = (sign_l < 0 ? contact_pairs[l].dofs_a :
@@ -161,9 +161,9 @@ namespace mbfem
           double mobility = 0.;
           for (unsigned int a = 0; a < n_alpha_total; ++a)
             mobility = std::max(mobility, std::abs(coupling(k * dim + d, a)));
-          held[k][d] = flexibility(k * dim + d, k * dim + d) <
-                         1e-12 * max_diagonal &&
-                       mobility < 1e-12;
+          held[k][d] =
+            flexibility(k * dim + d, k * dim + d) < 1e-12 * max_diagonal &&
+            mobility < 1e-12;
         }
   }
 
@@ -171,7 +171,8 @@ namespace mbfem
 
   template <int dim>
   bool
-  ContactSolver<dim>::solve_trial(const Trial &trial, Vector<double> &solution) const
+  ContactSolver<dim>::solve_trial(const Trial    &trial,
+                                  Vector<double> &solution) const
   {
     const unsigned int       n_r = n_pairs * dim;
     const unsigned int       n   = n_r + n_alpha_total;
@@ -187,7 +188,8 @@ namespace mbfem
         const auto        &pair     = contact_pairs[k];
         const ContactState state    = trial.state[k];
         const double       cohesion = trial.broken[k] ? 0. : pair.cohesion;
-        const double       mu = trial.tensile_slip[k] ? 0. : pair.friction_coefficient;
+        const double       mu =
+          trial.tensile_slip[k] ? 0. : pair.friction_coefficient;
         for (unsigned int d = 0; d < dim; ++d)
           {
             const unsigned int row = k * dim + d;
@@ -203,17 +205,17 @@ namespace mbfem
                   matrix(row, j) = flexibility(row, j) / scale;
                 for (unsigned int a = 0; a < n_alpha_total; ++a)
                   matrix(row, n_r + a) = coupling(row, a);
-                rhs(row) = (d == 0 ? -pair.initial_gap :
-                                     committed_displacement[k][d]) -
-                           external_displacement(row);
+                rhs(row) =
+                  (d == 0 ? -pair.initial_gap : committed_displacement[k][d]) -
+                  external_displacement(row);
               }
             else
               {
                 // Slip: r_T = -(c A + mu r_N) s.
-                const double s        = trial.slip_direction[k][d];
-                matrix(row, row)      = 1.;
+                const double s   = trial.slip_direction[k][d];
+                matrix(row, row) = 1.;
                 matrix(row, k * dim) += mu * s;
-                rhs(row)              = -cohesion * pair.area * s * scale;
+                rhs(row) = -cohesion * pair.area * s * scale;
               }
           }
       }
@@ -300,8 +302,8 @@ namespace mbfem
               return h;
             }))
           continue;
-        const auto  &pair = contact_pairs[k];
-        const double area = pair.area;
+        const auto  &pair     = contact_pairs[k];
+        const double area     = pair.area;
         const double cohesion = trial.broken[k] ? 0. : pair.cohesion;
         const double tension_limit =
           (trial.broken[k] ? 0. : pair.tensile_strength) * area;
@@ -335,29 +337,38 @@ namespace mbfem
                     next.state[k]          = ContactState::slip;
                     next.slip_direction[k] = -r_t / r_t.norm();
                     next.tensile_slip[k]   = r_n < 0.;
-                    violation[k] = (r_t.norm() - limit) / force_scale;
+                    violation[k]           = (r_t.norm() - limit) / force_scale;
                   }
                 break;
               }
             case ContactState::slip:
               {
                 const double along = increment_t * trial.slip_direction[k];
+                // 2D: the slip sign is assumed, and a reversed increment
+                // means the pair sticks. 3D: the direction is an unknown
+                // that follows the increment, so only a vanishing increment
+                // means the pair sticks.
+                const bool sticks =
+                  (dim == 2 ? along < -displacement_tolerance :
+                              increment_t.norm() < displacement_tolerance);
                 if (r_n < -tension_limit - force_tolerance)
                   break_open();
-                else if (along < -displacement_tolerance)
+                else if (sticks)
                   {
                     next.state[k] = ContactState::stick;
-                    violation[k]  = -along / displacement_scale;
+                    violation[k]  = std::abs(along) / displacement_scale;
                   }
                 else
                   {
-                    if (dim == 3 &&
-                        increment_t.norm() > displacement_tolerance)
+                    if (dim == 3)
                       {
-                        // The slip direction is an unknown in 3D: follow
-                        // the slip increment until it stops turning.
-                        const Tensor<1, dim> s =
-                          increment_t / increment_t.norm();
+                        // Fixed point on the direction, averaged with the
+                        // previous iterate to damp oscillation.
+                        Tensor<1, dim> s = increment_t / increment_t.norm() +
+                                           trial.slip_direction[k];
+                        if (s.norm() < 1e-12)
+                          s = increment_t;
+                        s /= s.norm();
                         direction_change =
                           std::max(direction_change,
                                    (s - trial.slip_direction[k]).norm());
@@ -396,10 +407,13 @@ namespace mbfem
     std::string s(n_pairs, ' ');
     for (unsigned int k = 0; k < n_pairs; ++k)
       {
+        // In 2D the slip sign is part of the state; in 3D the direction is
+        // a continuous unknown, iterated separately.
         char c = (trial.state[k] == ContactState::stick ? 'k' :
                   trial.state[k] == ContactState::open  ? 'o' :
-                  trial.slip_direction[k][1] > 0         ? '+' :
-                                                           '-');
+                  dim == 3                              ? 's' :
+                  trial.slip_direction[k][1] > 0        ? '+' :
+                                                          '-');
         if (trial.broken[k])
           c = static_cast<char>(std::toupper(c));
         if (trial.tensile_slip[k])
@@ -424,7 +438,7 @@ namespace mbfem
         // The directions in which the block's pairs can push, given their
         // states; the block is held iff they span its q free modes.
         std::vector<std::vector<double>> columns;
-        unsigned int counts[3] = {0, 0, 0};
+        unsigned int                     counts[3] = {0, 0, 0};
         for (unsigned int k = 0; k < n_pairs; ++k)
           {
             bool touches = false;
@@ -526,8 +540,9 @@ namespace mbfem
                                    const Trial               &to,
                                    const std::vector<double> &violation) {
       Trial              result = from;
-      const unsigned int worst  = std::distance(
-        violation.begin(), std::max_element(violation.begin(), violation.end()));
+      const unsigned int worst =
+        std::distance(violation.begin(),
+                      std::max_element(violation.begin(), violation.end()));
       result.state[worst]        = to.state[worst];
       result.broken[worst]       = to.broken[worst];
       result.tensile_slip[worst] = to.tensile_slip[worst];
@@ -535,7 +550,7 @@ namespace mbfem
       return result;
     };
 
-    Trial                 trial = committed;
+    Trial                 trial  = committed;
     bool                  damped = false;
     std::set<std::string> seen{signature(trial)};
     Trial                 last_good, last_good_next;
@@ -553,22 +568,25 @@ namespace mbfem
                 // go back and switch one pair at a time.
                 damped = true;
                 seen.clear();
-                trial = single_change(last_good, last_good_next, last_good_violation);
+                trial =
+                  single_change(last_good, last_good_next, last_good_violation);
                 seen.insert(signature(trial));
                 continue;
               }
             AssertThrow(false,
-                        ExcMessage("Load increment " + std::to_string(increment) +
-                                   ": no equilibrium." + diagnose_singular(trial)));
+                        ExcMessage(
+                          "Load increment " + std::to_string(increment) +
+                          ": no equilibrium." + diagnose_singular(trial)));
           }
 
         std::vector<double> violation;
         double              direction_change;
         Trial next = check(trial, solution, violation, direction_change);
+
         if (signature(next) == signature(trial) && direction_change < 1e-8)
           {
-            current          = trial;
-            current_solution = solution;
+            current                = trial;
+            current_solution       = solution;
             const unsigned int n_r = n_pairs * dim;
             current_displacement.assign(n_pairs, Tensor<1, dim>());
             for (unsigned int k = 0; k < n_pairs; ++k)
@@ -591,7 +609,8 @@ namespace mbfem
 
         if (damped && signature(next) != signature(trial))
           next = single_change(trial, next, violation);
-        if (seen.count(signature(next)) == 1)
+        if (signature(next) != signature(trial) &&
+            seen.count(signature(next)) == 1)
           {
             if (!damped)
               {
@@ -607,8 +626,8 @@ namespace mbfem
                   if (next.state[k] != trial.state[k])
                     {
                       pairs << "\n      pair " << k << " at ("
-                            << contact_pairs[k].point_a << "): "
-                            << to_string(trial.state[k]) << " <-> "
+                            << contact_pairs[k].point_a
+                            << "): " << to_string(trial.state[k]) << " <-> "
                             << to_string(next.state[k]);
                       ++n_listed;
                     }
@@ -619,8 +638,7 @@ namespace mbfem
                               std::to_string(iteration) +
                               " iterations, even switching one pair at a "
                               "time. Pairs that keep switching:" +
-                              pairs.str() +
-                              "\n    Use more load increments."));
+                              pairs.str() + "\n    Use more load increments."));
               }
           }
         seen.insert(signature(next));

@@ -164,6 +164,16 @@ namespace mbfem
                          std::to_string(dim) + "D mesh: " + e.what()));
           }
       }
+    AssertThrow(triangulation.all_reference_cells_are_hyper_cube(),
+                ExcMessage(
+                  "The mesh " +
+                  (parameters.source == "gmsh" ?
+                     "<" + parameters.mesh_file + "> " :
+                     std::string()) +
+                  "has triangles or tetrahedra; mbfem's FE_Q elements "
+                  "need quadrilaterals or hexahedra (in gmsh: "
+                  "Mesh.RecombineAll = 1 and Mesh.SubdivisionAlgorithm "
+                  "= 1 or 2)."));
     if (!parameters.block_id_function.empty())
       {
         FunctionParser<dim> block_id;
@@ -310,7 +320,17 @@ namespace mbfem
 
     block.clear();
     block.create_triangulation(vertices, cells, faces);
-    for (const auto manifold : mesh.get_manifold_ids())
+    // Every manifold the block's cells, faces and edges refer to (the
+    // triangulation's own list may omit ids that only faces carry, and an
+    // id without its manifold crashes MappingQ in a Release build).
+    std::set<types::manifold_id> used;
+    for (const auto &data : cells)
+      used.insert(data.manifold_id);
+    for (const auto &data : faces.boundary_lines)
+      used.insert(data.manifold_id);
+    for (const auto &data : faces.boundary_quads)
+      used.insert(data.manifold_id);
+    for (const auto manifold : used)
       if (manifold != numbers::flat_manifold_id)
         block.set_manifold(manifold, mesh.get_manifold(manifold));
   }

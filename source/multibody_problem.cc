@@ -95,9 +95,9 @@ namespace mbfem
     setup_blocks();
 
     const auto &first = *blocks.front();
-    pcout << "mbfem: " << (blocks.size() == 1 ? "one elastic block" :
-                                                std::to_string(blocks.size()) +
-                                                  " blocks")
+    pcout << "mbfem: "
+          << (blocks.size() == 1 ? "one elastic block" :
+                                   std::to_string(blocks.size()) + " blocks")
           << ", " << dim << "D" << (dim == 2 ? " plane strain" : "")
           << ", FE_Q(" << first.fe.degree << ")^" << dim << ", MappingQ("
           << first.mapping.get_degree() << ")\n";
@@ -113,7 +113,8 @@ namespace mbfem
           {
             pcout << "  floating: free rigid-body modes";
             for (const auto &mode : free_modes)
-              pcout << " [" << Block<dim>::describe_rigid_body_mode(mode) << "]";
+              pcout << " [" << Block<dim>::describe_rigid_body_mode(mode)
+                    << "]";
             pcout << ", held by contact\n";
           }
       }
@@ -124,23 +125,25 @@ namespace mbfem
 
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
-        const auto free_modes = blocks[b]->free_rigid_body_modes();
+        const auto  free_modes = blocks[b]->free_rigid_body_modes();
         std::string description;
         for (const auto &mode : free_modes)
-          description += " [" + Block<dim>::describe_rigid_body_mode(mode) + "]";
+          description +=
+            " [" + Block<dim>::describe_rigid_body_mode(mode) + "]";
         const bool has_pairs =
           std::any_of(pairs.begin(), pairs.end(), [b](const auto &pair) {
             return pair.block_a == b || pair.block_b == b;
           });
-        AssertThrow(free_modes.empty() || has_pairs,
-                    ExcMessage(
-                      blocks[b]->name() + " is not held: its supports " +
-                      "('Boundary conditions/...') leave " +
-                      std::to_string(free_modes.size()) +
-                      " rigid-body mode(s) free," + description +
-                      ", and it has no contact pair that could hold it. "
-                      "Prescribe the displacement components that remove "
-                      "them, or declare its interfaces in 'Contact/Interfaces'."));
+        AssertThrow(
+          free_modes.empty() || has_pairs,
+          ExcMessage(
+            blocks[b]->name() + " is not held: its supports " +
+            "('Boundary conditions/...') leave " +
+            std::to_string(free_modes.size()) + " rigid-body mode(s) free," +
+            description +
+            ", and it has no contact pair that could hold it. "
+            "Prescribe the displacement components that remove "
+            "them, or declare its interfaces in 'Contact/Interfaces'."));
       }
 
     if (!pairs.empty())
@@ -198,9 +201,9 @@ namespace mbfem
         for (const auto &block : blocks)
           AssertThrow(std::isfinite(block->solution.l2_norm()),
                       ExcMessage(
-                        "Increment " + std::to_string(k) + " (t = " +
-                        std::to_string(time) + "): the displacement of " +
-                        block->name() +
+                        "Increment " + std::to_string(k) +
+                        " (t = " + std::to_string(time) +
+                        "): the displacement of " + block->name() +
                         " is not finite. A load or prescribed displacement "
                         "function gives NaN or inf at this time. Results of "
                         "the earlier increments are in " +
@@ -214,13 +217,16 @@ namespace mbfem
             TimerOutput::Scope       t(timer, "output");
             std::vector<std::string> files;
             for (unsigned int b = 0; b < blocks.size(); ++b)
-              files.push_back(writer->write_block(*blocks[b], blocks[b]->id, k));
+              files.push_back(
+                writer->write_block(*blocks[b], blocks[b]->id, k));
             writer->add_step(time, files);
             if (pair_writer)
               pair_writer->add_step(time, {write_pairs(k, time)});
           }
       }
 
+    if (contact)
+      print_interface_summary();
     if (parameters.exact_solution.enabled)
       print_errors(history.time(history.n_increments));
 
@@ -229,8 +235,9 @@ namespace mbfem
             << (blocks.size() > 1 ? " per block" : "") << " indexed by "
             << writer->pvd_file() << "\n";
     if (contact && !parameters.run.test_mode)
-      pcout << "  contact pairs per increment in " << parameters.output.directory
-            << "/" << parameters.output.base_name << "-pairs-*.csv\n";
+      pcout << "  contact pairs per increment in "
+            << parameters.output.directory << "/" << parameters.output.base_name
+            << "-pairs-*.csv\n";
     if (!parameters.run.test_mode)
       timer.print_summary();
   }
@@ -257,8 +264,8 @@ namespace mbfem
                max_gap = 0.;
         for (unsigned int i = 0; i < contact->pairs().size(); ++i)
           {
-            const Tensor<1, dim> rho  = contact->local_force(i);
-            const double         area = contact->pairs()[i].area;
+            const Tensor<1, dim> rho        = contact->local_force(i);
+            const double         area       = contact->pairs()[i].area;
             Tensor<1, dim>       tangential = rho;
             tangential[0]                   = 0.;
             min_normal     = std::min(min_normal, rho[0] / area);
@@ -295,6 +302,105 @@ namespace mbfem
                         resultant[d]);
           pcout << ")" << std::defaultfloat << std::setprecision(6) << "\n";
         }
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_interface_summary() const
+  {
+    const auto &pairs = contact->pairs();
+    const auto &data  = parameters.contact;
+    for (unsigned int i = 0; i < data.interfaces.size(); ++i)
+      {
+        double p_max = 0., q_max = 0., p_error2 = 0., p_norm2 = 0.,
+               q_error2 = 0., q_norm2 = 0.;
+        // The same measured against the closed form averaged over each
+        // pair's tributary segment: force / area is such an average, which
+        // matters where the traction is not smooth (the contact edge).
+        double p_error2_avg = 0., q_error2_avg = 0.;
+        double closed[2] = {1e300, -1e300}, stuck[2] = {1e300, -1e300};
+        for (unsigned int k = 0; k < pairs.size(); ++k)
+          if (pairs[k].interface == i)
+            {
+              const Tensor<1, dim> rho =
+                contact->local_force(k) / pairs[k].area;
+              Tensor<1, dim> q = rho;
+              q[0]             = 0.;
+              p_max            = std::max(p_max, rho[0]);
+              q_max            = std::max(q_max, q.norm());
+              const double x =
+                0.5 * (pairs[k].point_a[0] + pairs[k].point_b[0]);
+              if (contact->state(k) != ContactState::open)
+                {
+                  closed[0] = std::min(closed[0], x);
+                  closed[1] = std::max(closed[1], x);
+                }
+              if (contact->state(k) == ContactState::stick)
+                {
+                  stuck[0] = std::min(stuck[0], x);
+                  stuck[1] = std::max(stuck[1], x);
+                }
+              if (dim == 2 && data.compute_traction_errors)
+                {
+                  const Point<2> point(x,
+                                       0.5 * (pairs[k].point_a[1] +
+                                              pairs[k].point_b[1]));
+                  const double   p_exact =
+                    data.exact_normal_traction->value(point);
+                  const double q_exact =
+                    data.exact_tangential_traction->value(point);
+                  p_error2 += pairs[k].area * std::pow(rho[0] - p_exact, 2);
+                  p_norm2 += pairs[k].area * p_exact * p_exact;
+                  q_error2 += pairs[k].area * std::pow(rho[1] - q_exact, 2);
+                  q_norm2 += pairs[k].area * q_exact * q_exact;
+
+                  // Midpoint rule with 64 points along the tangent.
+                  Tensor<1, 2> tangent;
+                  tangent[0]       = pairs[k].frame[1][0];
+                  tangent[1]       = pairs[k].frame[1][1];
+                  double p_average = 0., q_average = 0.;
+                  for (unsigned int j = 0; j < 64; ++j)
+                    {
+                      const Point<2> y = point + ((j + 0.5) / 64 - 0.5) *
+                                                   pairs[k].area * tangent;
+                      p_average += data.exact_normal_traction->value(y) / 64;
+                      q_average +=
+                        data.exact_tangential_traction->value(y) / 64;
+                    }
+                  p_error2_avg +=
+                    pairs[k].area * std::pow(rho[0] - p_average, 2);
+                  q_error2_avg +=
+                    pairs[k].area * std::pow(rho[1] - q_average, 2);
+                }
+            }
+        const auto span = [](const double range[2]) {
+          std::ostringstream s;
+          if (range[0] > range[1])
+            s << "none";
+          else
+            s << std::fixed << std::setprecision(5) << "x from " << range[0]
+              << " to " << range[1] << " (half-width "
+              << 0.5 * (range[1] - range[0]) << ")";
+          return s.str();
+        };
+        pcout << "  interface " << i + 1
+              << " at the end: max p = " << std::setprecision(6) << p_max
+              << ", max |q| = " << q_max
+              << "\n    closed pairs: " << span(closed)
+              << "\n    stuck pairs:  " << span(stuck) << "\n";
+        if (dim == 2 && data.compute_traction_errors)
+          pcout << "    relative L2 error against Contact/Exact traction: p "
+                << std::fixed << std::setprecision(4)
+                << std::sqrt(p_error2 / std::max(p_norm2, 1e-300)) << ", q "
+                << std::sqrt(q_error2 / std::max(q_norm2, 1e-300))
+                << " (at the pairs); p "
+                << std::sqrt(p_error2_avg / std::max(p_norm2, 1e-300)) << ", q "
+                << std::sqrt(q_error2_avg / std::max(q_norm2, 1e-300))
+                << " (averaged over each pair's area)" << std::defaultfloat
+                << std::setprecision(6) << "\n";
+      }
   }
 
 
@@ -351,9 +457,9 @@ namespace mbfem
   MultiBodyProblem<dim>::write_pairs(const unsigned int k,
                                      const double       time) const
   {
-    const auto        &pairs = contact->pairs();
-    const std::string  stem  = parameters.output.base_name + "-pairs-" +
-                             Utilities::int_to_string(k, 4);
+    const auto       &pairs = contact->pairs();
+    const std::string stem =
+      parameters.output.base_name + "-pairs-" + Utilities::int_to_string(k, 4);
     const char        *axes[] = {"x", "y", "z"};
     std::ostringstream csv;
     csv << "# increment " << k << ", t = " << time << "\n";
@@ -382,11 +488,16 @@ namespace mbfem
             std::snprintf(buffer, sizeof(buffer), ",%.10e", x[d]);
             csv << buffer;
           }
-        std::snprintf(buffer, sizeof(buffer), ",%.10e,%.10e", rho[0], rho[0] / pair.area);
+        std::snprintf(
+          buffer, sizeof(buffer), ",%.10e,%.10e", rho[0], rho[0] / pair.area);
         csv << buffer;
         for (unsigned int d = 1; d < dim; ++d)
           {
-            std::snprintf(buffer, sizeof(buffer), ",%.10e,%.10e", rho[d], rho[d] / pair.area);
+            std::snprintf(buffer,
+                          sizeof(buffer),
+                          ",%.10e,%.10e",
+                          rho[d],
+                          rho[d] / pair.area);
             csv << buffer;
           }
         std::snprintf(buffer, sizeof(buffer), ",%.10e", contact->gap(i));
@@ -396,11 +507,8 @@ namespace mbfem
             std::snprintf(buffer, sizeof(buffer), ",%.10e", s[d]);
             csv << buffer;
           }
-        std::snprintf(buffer,
-                      sizeof(buffer),
-                      ",%.10e,%.10e",
-                      pair.area,
-                      pair.initial_gap);
+        std::snprintf(
+          buffer, sizeof(buffer), ",%.10e,%.10e", pair.area, pair.initial_gap);
         csv << "," << to_string(contact->state(i)) << ","
             << (contact->broken(i) ? 1 : 0) << buffer << "\n";
 

@@ -12,7 +12,6 @@
 #include <mbfem/parameters.h>
 
 #include <deal.II/base/mpi.h>
-
 #include <deal.II/numerics/fe_field_function.h>
 
 #include <cstdio>
@@ -69,7 +68,8 @@ run(const std::string &text, mbfem::Parameters<2> &parameters)
   prm.parse_input_from_string(text);
   parameters.parse_parameters(prm, ".");
   static ConditionalOStream quiet(std::cout, false);
-  auto problem = std::make_unique<mbfem::MultiBodyProblem<2>>(parameters, quiet);
+  auto                      problem =
+    std::make_unique<mbfem::MultiBodyProblem<2>>(parameters, quiet);
   problem->run();
   return problem;
 }
@@ -83,7 +83,7 @@ main(int argc, char *argv[])
   const auto           whole = run(problem, whole_parameters);
   const auto           split = run(problem + cut, cut_parameters);
 
-  const auto &reference = *whole->get_blocks()[0];
+  const auto                   &reference = *whole->get_blocks()[0];
   Functions::FEFieldFunction<2> field(reference.dof_handler,
                                       reference.solution,
                                       reference.mapping);
@@ -102,7 +102,7 @@ main(int argc, char *argv[])
   double u_difference = 0., u_max = 0., s_difference = 0., s_max = 0.;
   for (const auto &block : split->get_blocks())
     {
-      const auto points = block->support_points();
+      const auto     points = block->support_points();
       Vector<double> value(2);
       // Displacement at every node of the block.
       std::vector<types::global_dof_index> dofs(block->fe.n_dofs_per_cell());
@@ -111,14 +111,16 @@ main(int argc, char *argv[])
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
             {
-              const unsigned int c = block->fe.system_to_component_index(i).first;
+              const unsigned int c =
+                block->fe.system_to_component_index(i).first;
               field.vector_value(points[dofs[i]], value);
-              u_difference = std::max(u_difference,
-                                      std::abs(block->solution(dofs[i]) - value(c)));
+              u_difference =
+                std::max(u_difference,
+                         std::abs(block->solution(dofs[i]) - value(c)));
               u_max = std::max(u_max, std::abs(value(c)));
             }
           // Stress at the cell centre, from both fields.
-          const Point<2> centre = cell->center();
+          const Point<2>            centre = cell->center();
           std::vector<Tensor<1, 2>> grad_ref(2), grad_cut(2);
           field.vector_gradient(centre, grad_ref);
           Functions::FEFieldFunction<2> own(block->dof_handler,
@@ -134,8 +136,8 @@ main(int argc, char *argv[])
             }
           const auto s_ref = block->material.stress<2>(symmetrize(g_ref));
           const auto s_cut = block->material.stress<2>(symmetrize(g_cut));
-          s_difference = std::max(s_difference, (s_ref - s_cut).norm());
-          s_max        = std::max(s_max, s_ref.norm());
+          s_difference     = std::max(s_difference, (s_ref - s_cut).norm());
+          s_max            = std::max(s_max, s_ref.norm());
         }
     }
   const double u_relative = u_difference / u_max;

@@ -5,6 +5,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
@@ -22,13 +23,13 @@ namespace mbfem
   {
     /** "blocks 1:2" (the faces the two blocks share in the mesh) or
      * "boundaries 3:4" (faces with these boundary ids). */
-    bool               by_blocks = true;
-    unsigned int       side_a    = 0;
-    unsigned int       side_b    = 0;
-    double             friction_coefficient = 0.;
-    double             cohesion             = 0.;
-    double             tensile_strength     = 0.;
-    std::string        description;
+    bool         by_blocks            = true;
+    unsigned int side_a               = 0;
+    unsigned int side_b               = 0;
+    double       friction_coefficient = 0.;
+    double       cohesion             = 0.;
+    double       tensile_strength     = 0.;
+    std::string  description;
   };
 
   /** Subsection "Contact": the interfaces and their Mohr-Coulomb data. */
@@ -43,6 +44,11 @@ namespace mbfem
     std::vector<InterfaceDeclaration> interfaces;
     double                            search_distance = 0.;
     unsigned int                      max_iterations  = 100;
+
+    /** Closed-form contact tractions to measure the pairs against. */
+    bool compute_traction_errors = false;
+    std::shared_ptr<Functions::ParsedFunction<2>> exact_normal_traction;
+    std::shared_ptr<Functions::ParsedFunction<2>> exact_tangential_traction;
   };
 
   /**
@@ -61,8 +67,8 @@ namespace mbfem
     unsigned int block_b;
     std::array<types::global_dof_index, dim> dofs_a;
     std::array<types::global_dof_index, dim> dofs_b;
-    Point<dim>     point_a;
-    Point<dim>     point_b;
+    Point<dim>                               point_a;
+    Point<dim>                               point_b;
     /** Rows: normal, then the dim-1 tangents; orthonormal. */
     Tensor<2, dim> frame;
     double         initial_gap;

@@ -5,7 +5,6 @@
 #include <mbfem/contact_interface.h>
 
 #include <deal.II/base/tensor.h>
-
 #include <deal.II/lac/full_matrix.h>
 
 #include <memory>
@@ -115,7 +114,7 @@ namespace mbfem
     {
       std::vector<ContactState>   state;
       std::vector<bool>           broken;
-      std::vector<bool>           tensile_slip; // slip with r_N < 0: no mu
+      std::vector<bool>           tensile_slip;   // slip with r_N < 0: no mu
       std::vector<Tensor<1, dim>> slip_direction; // local, tangential
     };
 
@@ -142,10 +141,10 @@ namespace mbfem
     const unsigned int                  n_pairs;
 
     /** Blocks' floating modes: offset of each block's alphas, and count. */
-    std::vector<unsigned int> alpha_offset;
-    std::vector<unsigned int> n_alpha;
-    unsigned int              n_alpha_total = 0;
-    std::vector<std::string>  block_names;
+    std::vector<unsigned int>                alpha_offset;
+    std::vector<unsigned int>                n_alpha;
+    unsigned int                             n_alpha_total = 0;
+    std::vector<std::string>                 block_names;
     std::vector<std::vector<Vector<double>>> mode_coefficients;
 
     /** In the pairs' frames: C_hat = R C_a R^T, P_hat = R P. */

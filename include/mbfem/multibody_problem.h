@@ -58,15 +58,22 @@ namespace mbfem
     void
     print_errors(const double time) const;
 
+    /**
+     * Per interface: largest tractions, the extent of the closed and the
+     * stuck pairs (2D: along x), and errors against Contact/Exact traction.
+     */
+    void
+    print_interface_summary() const;
+
     /** The pairs as CSV and as a VTU point set, for this increment. */
     std::string
     write_pairs(const unsigned int k, const double time) const;
 
-    Parameters<dim>                          &parameters;
-    ConditionalOStream                       &pcout;
-    TimerOutput                               timer;
-    std::vector<std::unique_ptr<Block<dim>>>  blocks;
-    std::unique_ptr<ContactSolver<dim>>       contact;
+    Parameters<dim>                         &parameters;
+    ConditionalOStream                      &pcout;
+    TimerOutput                              timer;
+    std::vector<std::unique_ptr<Block<dim>>> blocks;
+    std::unique_ptr<ContactSolver<dim>>      contact;
   };
 } // namespace mbfem
 
