@@ -36,6 +36,7 @@ namespace mbfem
     committed.broken.assign(n_pairs, false);
     committed.tensile_slip.assign(n_pairs, false);
     committed.slip_direction.assign(n_pairs, Tensor<1, dim>());
+    committed.direction_stiffness.assign(n_pairs, 0.);
     for (unsigned int k = 0; k < n_pairs; ++k)
       committed.state[k] =
         (contact_pairs[k].initial_gap > 0. ? ContactState::open :
@@ -334,23 +335,23 @@ namespace mbfem
                   break_open();
                 else if (r_t.norm() > limit + force_tolerance)
                   {
-                    next.state[k]          = ContactState::slip;
-                    next.slip_direction[k] = -r_t / r_t.norm();
-                    next.tensile_slip[k]   = r_n < 0.;
-                    violation[k]           = (r_t.norm() - limit) / force_scale;
+                    next.state[k]               = ContactState::slip;
+                    next.slip_direction[k]      = -r_t / r_t.norm();
+                    next.direction_stiffness[k] = 0.;
+                    next.tensile_slip[k]        = r_n < 0.;
+                    violation[k] = (r_t.norm() - limit) / force_scale;
                   }
                 break;
               }
             case ContactState::slip:
               {
                 const double along = increment_t * trial.slip_direction[k];
-                // 2D: the slip sign is assumed, and a reversed increment
-                // means the pair sticks. 3D: the direction is an unknown
-                // that follows the increment, so only a vanishing increment
-                // means the pair sticks.
+                // A slip increment against the assumed direction (2D: a
+                // reversed sign; 3D: more than 90 degrees off) or none at
+                // all means the pair sticks.
                 const bool sticks =
-                  (dim == 2 ? along < -displacement_tolerance :
-                              increment_t.norm() < displacement_tolerance);
+                  along < -displacement_tolerance ||
+                  (dim == 3 && increment_t.norm() < displacement_tolerance);
                 if (r_n < -tension_limit - force_tolerance)
                   break_open();
                 else if (sticks)
@@ -362,17 +363,20 @@ namespace mbfem
                   {
                     if (dim == 3)
                       {
-                        // Fixed point on the direction, averaged with the
-                        // previous iterate to damp oscillation.
-                        Tensor<1, dim> s = increment_t / increment_t.norm() +
-                                           trial.slip_direction[k];
-                        if (s.norm() < 1e-12)
-                          s = increment_t;
-                        s /= s.norm();
+                        // Newton on the direction: the next linearisation
+                        // is about this iterate's slip increment.
+                        const Tensor<1, dim> s =
+                          increment_t / increment_t.norm();
                         direction_change =
                           std::max(direction_change,
                                    (s - trial.slip_direction[k]).norm());
                         next.slip_direction[k] = s;
+                        const double mu        = trial.tensile_slip[k] ?
+                                                   0. :
+                                                   pair.friction_coefficient;
+                        next.direction_stiffness[k] =
+                          (cohesion * area + mu * std::max(r_n, 0.)) /
+                          increment_t.norm();
                       }
                     const bool tensile = r_n < -force_tolerance;
                     if (tensile != trial.tensile_slip[k])
@@ -547,6 +551,7 @@ namespace mbfem
       result.broken[worst]       = to.broken[worst];
       result.tensile_slip[worst] = to.tensile_slip[worst];
       result.slip_direction      = to.slip_direction;
+      result.direction_stiffness = to.direction_stiffness;
       return result;
     };
 

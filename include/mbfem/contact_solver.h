@@ -116,6 +116,12 @@ namespace mbfem
       std::vector<bool>           broken;
       std::vector<bool>           tensile_slip;   // slip with r_N < 0: no mu
       std::vector<Tensor<1, dim>> slip_direction; // local, tangential
+      /**
+       * 3D: (c A + mu r_N) / |slip increment| of the last iterate, the
+       * weight of the direction's linearisation (Newton on the direction of
+       * the slip law); 0 keeps the direction fixed.
+       */
+      std::vector<double> direction_stiffness;
     };
 
     /** Assembles and solves the system of @p trial into rho, alpha. */
