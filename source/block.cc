@@ -89,8 +89,9 @@ namespace mbfem
     // The floating modes, as displacement vectors, and the pins that
     // remove them; then the constraints again, now with the pins.
     const std::vector<Vector<double>> modes = rigid_body_modes();
+    free_mode_coefficients                  = compute_free_rigid_body_modes();
     free_modes.clear();
-    for (const auto &coefficients : free_rigid_body_modes())
+    for (const auto &coefficients : free_mode_coefficients)
       {
         Vector<double> mode(dof_handler.n_dofs());
         for (unsigned int a = 0; a < modes.size(); ++a)
@@ -524,8 +525,7 @@ namespace mbfem
   std::vector<Vector<double>>
   Block<dim>::rigid_body_modes() const
   {
-    std::vector<Point<dim>> points(dof_handler.n_dofs());
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+    const std::vector<Point<dim>>        points = support_points();
     std::vector<unsigned int>            component(dof_handler.n_dofs());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -567,8 +567,17 @@ namespace mbfem
 
 
   template <int dim>
-  std::vector<Vector<double>>
+  const std::vector<Vector<double>> &
   Block<dim>::free_rigid_body_modes() const
+  {
+    return free_mode_coefficients;
+  }
+
+
+
+  template <int dim>
+  std::vector<Vector<double>>
+  Block<dim>::compute_free_rigid_body_modes() const
   {
     const std::vector<Vector<double>> modes   = rigid_body_modes();
     const unsigned int                n_modes = modes.size();

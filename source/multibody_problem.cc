@@ -108,7 +108,7 @@ namespace mbfem
               << ", degrees of freedom: " << block->n_dofs() << "\n"
               << "  E = " << block->material.youngs_modulus
               << ", nu = " << block->material.poissons_ratio << "\n";
-        const auto free_modes = block->free_rigid_body_modes();
+        const auto &free_modes = block->free_rigid_body_modes();
         if (!free_modes.empty())
           {
             pcout << "  floating: free rigid-body modes";

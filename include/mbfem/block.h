@@ -148,9 +148,10 @@ namespace mbfem
      * The combinations of rigid_body_modes() that the supports (prescribed
      * displacements, point supports, platens) leave free, one coefficient
      * vector each in reduced row-echelon form; empty for a held block.
-     * Without supports all are free (3 in 2D, 6 in 3D).
+     * Without supports all are free (3 in 2D, 6 in 3D). Found by
+     * setup_system().
      */
-    std::vector<Vector<double>>
+    const std::vector<Vector<double>> &
     free_rigid_body_modes() const;
 
     /** "translation x", "rotation about z", ... for messages. */
@@ -211,6 +212,10 @@ namespace mbfem
     void
     make_constraints(const BoundaryConditions<dim> &boundary_conditions);
 
+    /** The free modes of the physical constraints (see above). */
+    std::vector<Vector<double>>
+    compute_free_rigid_body_modes() const;
+
     /** Chooses pinned_dofs so that they remove exactly the free modes. */
     void
     choose_pins();
@@ -218,6 +223,7 @@ namespace mbfem
     AffineConstraints<double>            physical_constraints;
     AffineConstraints<double>            constraints;
     AffineConstraints<double>            homogeneous_constraints;
+    std::vector<Vector<double>>          free_mode_coefficients;
     std::vector<Vector<double>>          free_modes;
     std::vector<types::global_dof_index> pins;
     TrilinosWrappers::SparseMatrix       stiffness;
