@@ -36,7 +36,6 @@ namespace mbfem
     committed.broken.assign(n_pairs, false);
     committed.tensile_slip.assign(n_pairs, false);
     committed.slip_direction.assign(n_pairs, Tensor<1, dim>());
-    committed.direction_stiffness.assign(n_pairs, 0.);
     for (unsigned int k = 0; k < n_pairs; ++k)
       committed.state[k] =
         (contact_pairs[k].initial_gap > 0. ? ContactState::open :
@@ -335,11 +334,10 @@ namespace mbfem
                   break_open();
                 else if (r_t.norm() > limit + force_tolerance)
                   {
-                    next.state[k]               = ContactState::slip;
-                    next.slip_direction[k]      = -r_t / r_t.norm();
-                    next.direction_stiffness[k] = 0.;
-                    next.tensile_slip[k]        = r_n < 0.;
-                    violation[k] = (r_t.norm() - limit) / force_scale;
+                    next.state[k]          = ContactState::slip;
+                    next.slip_direction[k] = -r_t / r_t.norm();
+                    next.tensile_slip[k]   = r_n < 0.;
+                    violation[k]           = (r_t.norm() - limit) / force_scale;
                   }
                 break;
               }
@@ -361,23 +359,9 @@ namespace mbfem
                   }
                 else
                   {
-                    if (dim == 3)
-                      {
-                        // Newton on the direction: the next linearisation
-                        // is about this iterate's slip increment.
-                        const Tensor<1, dim> s =
-                          increment_t / increment_t.norm();
-                        direction_change =
-                          std::max(direction_change,
-                                   (s - trial.slip_direction[k]).norm());
-                        next.slip_direction[k] = s;
-                        const double mu        = trial.tensile_slip[k] ?
-                                                   0. :
-                                                   pair.friction_coefficient;
-                        next.direction_stiffness[k] =
-                          (cohesion * area + mu * std::max(r_n, 0.)) /
-                          increment_t.norm();
-                      }
+                    // 3D: the direction stays as the pair entered slip or
+                    // the increment (radial return); commit() turns it to
+                    // the slip actually made, for the next increment.
                     const bool tensile = r_n < -force_tolerance;
                     if (tensile != trial.tensile_slip[k])
                       {
@@ -551,7 +535,6 @@ namespace mbfem
       result.broken[worst]       = to.broken[worst];
       result.tensile_slip[worst] = to.tensile_slip[worst];
       result.slip_direction      = to.slip_direction;
-      result.direction_stiffness = to.direction_stiffness;
       return result;
     };
 
@@ -664,8 +647,44 @@ namespace mbfem
   void
   ContactSolver<dim>::commit()
   {
+    // 3D: a pair that keeps slipping slips next in the direction it just
+    // slipped (the Coulomb law wants friction opposite to the slip; within
+    // an increment the direction is held, see misalignment()).
+    if (dim == 3)
+      for (unsigned int k = 0; k < n_pairs; ++k)
+        if (current.state[k] == ContactState::slip)
+          {
+            Tensor<1, dim> v =
+              current_displacement[k] - committed_displacement[k];
+            v[0] = 0.;
+            if (v.norm() > 0.)
+              current.slip_direction[k] = v / v.norm();
+          }
     committed              = current;
     committed_displacement = current_displacement;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactSolver<dim>::misalignment() const
+  {
+    double largest = 0.;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      if (current.state[k] == ContactState::slip)
+        {
+          Tensor<1, dim> v =
+            current_displacement[k] - committed_displacement[k];
+          v[0] = 0.;
+          if (v.norm() == 0.)
+            continue;
+          const double cosine =
+            std::min(1.,
+                     std::max(-1., v * current.slip_direction[k] / v.norm()));
+          largest = std::max(largest, std::acos(cosine) * 180. / numbers::PI);
+        }
+    return largest;
   }
 
 

@@ -187,6 +187,12 @@ namespace mbfem
               TimerOutput::Scope t(timer, "contact iterations");
               iterations = contact->solve_increment(blocks, k);
             }
+            if (dim == 3 && contact->count(ContactState::slip) > 0)
+              pcout << "    slip direction held within the increment: largest "
+                       "angle to the slip made "
+                    << std::fixed << std::setprecision(1)
+                    << contact->misalignment() << " degrees"
+                    << std::defaultfloat << std::setprecision(6) << "\n";
             TimerOutput::Scope t(timer, "field recovery");
             for (unsigned int b = 0; b < blocks.size(); ++b)
               {

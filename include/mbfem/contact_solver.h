@@ -105,6 +105,16 @@ namespace mbfem
     bool
     broken(const unsigned int k) const;
 
+    /**
+     * 3D: the largest angle (degrees) between a slipping pair's friction
+     * direction and its slip in the increment just solved (before
+     * commit()). The direction is held within an increment, so this
+     * measures the error of that approximation; it falls with more
+     * increments. 0 in 2D.
+     */
+    double
+    misalignment() const;
+
     /** Count of pairs in @p state. */
     unsigned int
     count(const ContactState state) const;
@@ -116,12 +126,6 @@ namespace mbfem
       std::vector<bool>           broken;
       std::vector<bool>           tensile_slip;   // slip with r_N < 0: no mu
       std::vector<Tensor<1, dim>> slip_direction; // local, tangential
-      /**
-       * 3D: (c A + mu r_N) / |slip increment| of the last iterate, the
-       * weight of the direction's linearisation (Newton on the direction of
-       * the slip law); 0 keeps the direction fixed.
-       */
-      std::vector<double> direction_stiffness;
     };
 
     /** Assembles and solves the system of @p trial into rho, alpha. */
