@@ -36,6 +36,7 @@ namespace mbfem
     committed.broken.assign(n_pairs, false);
     committed.tensile_slip.assign(n_pairs, false);
     committed.slip_direction.assign(n_pairs, Tensor<1, dim>());
+    committed.direction_stiffness.assign(n_pairs, 0.);
     for (unsigned int k = 0; k < n_pairs; ++k)
       committed.state[k] =
         (contact_pairs[k].initial_gap > 0. ? ContactState::open :
@@ -211,11 +212,30 @@ namespace mbfem
               }
             else
               {
-                // Slip: r_T = -(c A + mu r_N) s.
+                // Slip: r_T = -(c A + mu r_N) s. In 3D s = v/|v|, v the
+                // slip increment, linearised about the last iterate (Newton
+                // on the direction):
+                //   r_T + mu s r_N + beta (I - s s^T) v = -c A s,
+                // which is the slip law itself once (I - s s^T) v = 0.
                 const double s   = trial.slip_direction[k][d];
                 matrix(row, row) = 1.;
                 matrix(row, k * dim) += mu * s;
-                rhs(row) = -cohesion * pair.area * s * scale;
+                rhs(row)          = -cohesion * pair.area * s * scale;
+                const double beta = trial.direction_stiffness[k];
+                for (unsigned int e = 1; e < dim && beta > 0.; ++e)
+                  {
+                    const double m =
+                      (d == e ? 1. : 0.) - s * trial.slip_direction[k][e];
+                    const unsigned int source = k * dim + e;
+                    for (unsigned int j = 0; j < n_r; ++j)
+                      matrix(row, j) += beta * m * flexibility(source, j);
+                    for (unsigned int a = 0; a < n_alpha_total; ++a)
+                      matrix(row, n_r + a) +=
+                        beta * m * scale * coupling(source, a);
+                    rhs(row) -= beta * m * scale *
+                                (external_displacement(source) -
+                                 committed_displacement[k][e]);
+                  }
               }
           }
       }
@@ -334,10 +354,11 @@ namespace mbfem
                   break_open();
                 else if (r_t.norm() > limit + force_tolerance)
                   {
-                    next.state[k]          = ContactState::slip;
-                    next.slip_direction[k] = -r_t / r_t.norm();
-                    next.tensile_slip[k]   = r_n < 0.;
-                    violation[k]           = (r_t.norm() - limit) / force_scale;
+                    next.state[k]               = ContactState::slip;
+                    next.slip_direction[k]      = -r_t / r_t.norm();
+                    next.direction_stiffness[k] = 0.;
+                    next.tensile_slip[k]        = r_n < 0.;
+                    violation[k] = (r_t.norm() - limit) / force_scale;
                   }
                 break;
               }
@@ -359,9 +380,22 @@ namespace mbfem
                   }
                 else
                   {
-                    // 3D: the direction stays as the pair entered slip or
-                    // the increment (radial return); commit() turns it to
-                    // the slip actually made, for the next increment.
+                    if (dim == 3)
+                      {
+                        // Next Newton step about this slip increment.
+                        const Tensor<1, dim> s =
+                          increment_t / increment_t.norm();
+                        direction_change =
+                          std::max(direction_change,
+                                   (s - trial.slip_direction[k]).norm());
+                        next.slip_direction[k] = s;
+                        const double mu        = trial.tensile_slip[k] ?
+                                                   0. :
+                                                   pair.friction_coefficient;
+                        next.direction_stiffness[k] =
+                          (cohesion * area + mu * std::max(r_n, 0.)) /
+                          increment_t.norm();
+                      }
                     const bool tensile = r_n < -force_tolerance;
                     if (tensile != trial.tensile_slip[k])
                       {
@@ -535,6 +569,7 @@ namespace mbfem
       result.broken[worst]       = to.broken[worst];
       result.tensile_slip[worst] = to.tensile_slip[worst];
       result.slip_direction      = to.slip_direction;
+      result.direction_stiffness = to.direction_stiffness;
       return result;
     };
 
@@ -571,7 +606,7 @@ namespace mbfem
         double              direction_change;
         Trial next = check(trial, solution, violation, direction_change);
 
-        if (signature(next) == signature(trial) && direction_change < 1e-8)
+        if (signature(next) == signature(trial) && direction_change < 1e-6)
           {
             current                = trial;
             current_solution       = solution;
@@ -647,9 +682,8 @@ namespace mbfem
   void
   ContactSolver<dim>::commit()
   {
-    // 3D: a pair that keeps slipping slips next in the direction it just
-    // slipped (the Coulomb law wants friction opposite to the slip; within
-    // an increment the direction is held, see misalignment()).
+    // 3D: the direction a pair just slipped in is the first guess of the
+    // next increment's Newton iteration on the direction.
     if (dim == 3)
       for (unsigned int k = 0; k < n_pairs; ++k)
         if (current.state[k] == ContactState::slip)

@@ -188,8 +188,7 @@ namespace mbfem
               iterations = contact->solve_increment(blocks, k);
             }
             if (dim == 3 && contact->count(ContactState::slip) > 0)
-              pcout << "    slip direction held within the increment: largest "
-                       "angle to the slip made "
+              pcout << "    friction against the slip made: largest angle "
                     << std::fixed << std::setprecision(1)
                     << contact->misalignment() << " degrees"
                     << std::defaultfloat << std::setprecision(6) << "\n";
@@ -391,11 +390,40 @@ namespace mbfem
               << 0.5 * (range[1] - range[0]) << ")";
           return s.str();
         };
+        // Table 1 at the end: slipping pairs on the Mohr-Coulomb cone,
+        // stuck pairs inside it (to 1e-8 of the largest pair force).
+        double largest_force = 0., off_cone = 0., outside = 0.;
+        for (unsigned int k = 0; k < pairs.size(); ++k)
+          if (pairs[k].interface == i)
+            largest_force =
+              std::max(largest_force, contact->local_force(k).norm());
+        for (unsigned int k = 0; k < pairs.size(); ++k)
+          if (pairs[k].interface == i &&
+              contact->state(k) != ContactState::open)
+            {
+              const Tensor<1, dim> rho        = contact->local_force(k);
+              Tensor<1, dim>       tangential = rho;
+              tangential[0]                   = 0.;
+              const auto  &interface          = data.interfaces[i];
+              const double limit =
+                (contact->broken(k) ? 0. : interface.cohesion * pairs[k].area) +
+                interface.friction_coefficient * std::max(rho[0], 0.);
+              if (contact->state(k) == ContactState::slip)
+                off_cone =
+                  std::max(off_cone, std::abs(tangential.norm() - limit));
+              else
+                outside = std::max(outside, tangential.norm() - limit);
+            }
+        const double tolerance = 1e-8 * std::max(largest_force, 1e-300);
         pcout << "  interface " << i + 1
               << " at the end: max p = " << std::setprecision(6) << p_max
               << ", max |q| = " << q_max
               << "\n    closed pairs: " << span(closed)
-              << "\n    stuck pairs:  " << span(stuck) << "\n";
+              << "\n    stuck pairs:  " << span(stuck) << "\n"
+              << "    Coulomb: slipping pairs on the cone "
+              << (off_cone <= tolerance ? "yes" : "NO")
+              << ", stuck pairs inside it "
+              << (outside <= tolerance ? "yes" : "NO") << "\n";
         if (dim == 2 && data.compute_traction_errors)
           pcout << "    relative L2 error against Contact/Exact traction: p "
                 << std::fixed << std::setprecision(4)

@@ -108,9 +108,9 @@ namespace mbfem
     /**
      * 3D: the largest angle (degrees) between a slipping pair's friction
      * direction and its slip in the increment just solved (before
-     * commit()). The direction is held within an increment, so this
-     * measures the error of that approximation; it falls with more
-     * increments. 0 in 2D.
+     * commit()), over pairs slipping at least 1 % of the most. The
+     * direction is solved for (Newton on the slip law), so this is 0 up to
+     * the iteration's tolerance: a check, printed every increment. 0 in 2D.
      */
     double
     misalignment() const;
@@ -126,6 +126,11 @@ namespace mbfem
       std::vector<bool>           broken;
       std::vector<bool>           tensile_slip;   // slip with r_N < 0: no mu
       std::vector<Tensor<1, dim>> slip_direction; // local, tangential
+      /**
+       * 3D: (c A + mu r_N) / |slip increment| at the last iterate, the
+       * weight of the linearised slip direction; 0 holds it fixed.
+       */
+      std::vector<double> direction_stiffness;
     };
 
     /** Assembles and solves the system of @p trial into rho, alpha. */
