@@ -502,15 +502,6 @@ namespace mbfem
 
 
   template <int dim>
-  const std::vector<types::global_dof_index> &
-  Block<dim>::pinned_dofs() const
-  {
-    return pins;
-  }
-
-
-
-  template <int dim>
   std::vector<Point<dim>>
   Block<dim>::support_points() const
   {

@@ -286,17 +286,8 @@ namespace mbfem
                             std::vector<double>  &violation,
                             double               &direction_change) const
   {
-    const unsigned int n_r = n_pairs * dim;
-    Vector<double>     displacement(n_r);
-    for (unsigned int i = 0; i < n_r; ++i)
-      {
-        double value = external_displacement(i);
-        for (unsigned int j = 0; j < n_r; ++j)
-          value += flexibility(i, j) * solution(j);
-        for (unsigned int a = 0; a < n_alpha_total; ++a)
-          value += coupling(i, a) * solution(n_r + a);
-        displacement(i) = value;
-      }
+    const unsigned int   n_r          = n_pairs * dim;
+    const Vector<double> displacement = relative_displacement(solution);
 
     double force_scale = 1e-300, displacement_scale = 1e-300;
     for (unsigned int i = 0; i < n_r; ++i)
@@ -418,6 +409,27 @@ namespace mbfem
           }
       }
     return next;
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  ContactSolver<dim>::relative_displacement(
+    const Vector<double> &solution) const
+  {
+    const unsigned int n_r = n_pairs * dim;
+    Vector<double>     d(n_r);
+    for (unsigned int i = 0; i < n_r; ++i)
+      {
+        double value = external_displacement(i);
+        for (unsigned int j = 0; j < n_r; ++j)
+          value += flexibility(i, j) * solution(j);
+        for (unsigned int a = 0; a < n_alpha_total; ++a)
+          value += coupling(i, a) * solution(n_r + a);
+        d(i) = value;
+      }
+    return d;
   }
 
 
@@ -610,18 +622,11 @@ namespace mbfem
           {
             current                = trial;
             current_solution       = solution;
-            const unsigned int n_r = n_pairs * dim;
+            const Vector<double> d = relative_displacement(solution);
             current_displacement.assign(n_pairs, Tensor<1, dim>());
             for (unsigned int k = 0; k < n_pairs; ++k)
               for (unsigned int i = 0; i < dim; ++i)
-                {
-                  double value = external_displacement(k * dim + i);
-                  for (unsigned int j = 0; j < n_r; ++j)
-                    value += flexibility(k * dim + i, j) * solution(j);
-                  for (unsigned int a = 0; a < n_alpha_total; ++a)
-                    value += coupling(k * dim + i, a) * solution(n_r + a);
-                  current_displacement[k][i] = value;
-                }
+                current_displacement[k][i] = d(k * dim + i);
             current.slip_direction = next.slip_direction;
             return iteration;
           }

@@ -29,7 +29,7 @@ namespace mbfem
     Triangulation<dim> mesh;
     create_mesh(parameters.mesh, mesh);
 
-    const auto materials = parameters.block_materials;
+    const auto &materials = parameters.block_materials;
     for (const auto id : block_ids(mesh))
       {
         Material material = parameters.material;
@@ -215,8 +215,9 @@ namespace mbfem
                         parameters.output.directory + "."));
 
         print_increment(k, time, iterations);
+        std::string pair_file;
         if (contact)
-          write_pairs(k, time);
+          pair_file = write_pairs(k, time);
         if (writer)
           {
             TimerOutput::Scope       t(timer, "output");
@@ -226,7 +227,7 @@ namespace mbfem
                 writer->write_block(*blocks[b], blocks[b]->id, k));
             writer->add_step(time, files);
             if (pair_writer)
-              pair_writer->add_step(time, {write_pairs(k, time)});
+              pair_writer->add_step(time, {pair_file});
           }
       }
 

@@ -131,10 +131,6 @@ namespace mbfem
     const std::vector<Vector<double>> &
     floating_modes() const;
 
-    /** The DoFs pinned to remove the floating modes. */
-    const std::vector<types::global_dof_index> &
-    pinned_dofs() const;
-
     /**
      * The rigid-body modes of the block as displacement vectors: the dim
      * translations and the rotations (1 in 2D, 3 in 3D) about the block's
@@ -216,7 +212,7 @@ namespace mbfem
     std::vector<Vector<double>>
     compute_free_rigid_body_modes() const;
 
-    /** Chooses pinned_dofs so that they remove exactly the free modes. */
+    /** Chooses the pins so that they remove exactly the free modes. */
     void
     choose_pins();
 

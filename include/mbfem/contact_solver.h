@@ -144,6 +144,13 @@ namespace mbfem
           std::vector<double>  &violation,
           double               &direction_change) const;
 
+    /**
+     * d = Delta_F + C_hat rho + P_hat alpha in the pairs' frames, for the
+     * solution (rho, alpha) of a trial.
+     */
+    Vector<double>
+    relative_displacement(const Vector<double> &solution) const;
+
     /** Message for a singular system: which block is not held. */
     std::string
     diagnose_singular(const Trial &trial) const;
