@@ -49,6 +49,9 @@ namespace mbfem
   void
   DirectSolver::factorize(const TrilinosWrappers::SparseMatrix &A)
   {
+    // A solver refers to its linear problem (MUMPS even in its
+    // destructor): release the old solver before the old problem.
+    solver.reset();
     matrix         = &A;
     linear_problem = std::make_unique<Epetra_LinearProblem>();
     // Amesos wants a non-const operator but does not change it.
