@@ -82,6 +82,7 @@ namespace mbfem
     solution.reinit(dof_handler.n_dofs());
     load.reinit(dof_handler.n_dofs());
     external_load.reinit(dof_handler.n_dofs());
+    physical_load.reinit(dof_handler.n_dofs());
 
     pins.clear();
     make_constraints(boundary_conditions);
@@ -299,6 +300,56 @@ namespace mbfem
 
   template <int dim>
   void
+  Block<dim>::assemble_unpinned_stiffness(SparsityPattern      &pattern,
+                                          SparseMatrix<double> &matrix) const
+  {
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    physical_constraints,
+                                    false);
+    pattern.copy_from(dsp);
+    matrix.reinit(pattern);
+
+    FEValues<dim>      fe_values(mapping,
+                            fe,
+                            QGauss<dim>(fe.degree + 1),
+                            update_gradients | update_JxW_values);
+    FullMatrix<double> cell(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    for (const auto &c : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(c);
+        cell_matrix(fe_values, cell);
+        c->get_dof_indices(dof_indices);
+        physical_constraints.distribute_local_to_global(cell,
+                                                        dof_indices,
+                                                        matrix);
+      }
+  }
+
+
+
+  template <int dim>
+  const AffineConstraints<double> &
+  Block<dim>::get_physical_constraints() const
+  {
+    return physical_constraints;
+  }
+
+
+
+  template <int dim>
+  const Vector<double> &
+  Block<dim>::unpinned_load() const
+  {
+    return physical_load;
+  }
+
+
+
+  template <int dim>
+  void
   Block<dim>::factorize()
   {
     try
@@ -324,6 +375,7 @@ namespace mbfem
     make_constraints(boundary_conditions);
     load          = 0.;
     external_load = 0.;
+    physical_load = 0.;
 
     const unsigned int                   n = fe.n_dofs_per_cell();
     FEValues<dim>                        fe_values(mapping,
@@ -404,9 +456,20 @@ namespace mbfem
                                                    dof_indices,
                                                    load,
                                                    matrix);
+            physical_constraints.distribute_local_to_global(cell_load,
+                                                            dof_indices,
+                                                            physical_load,
+                                                            matrix);
           }
         else
-          constraints.distribute_local_to_global(cell_load, dof_indices, load);
+          {
+            constraints.distribute_local_to_global(cell_load,
+                                                   dof_indices,
+                                                   load);
+            physical_constraints.distribute_local_to_global(cell_load,
+                                                            dof_indices,
+                                                            physical_load);
+          }
       }
   }
 

@@ -55,6 +55,21 @@ namespace mbfem
         Patterns::Integer(1),
         "Most contact-state iterations (assume states, solve, check, switch) "
         "in one load increment before the run stops with a message.");
+      prm.declare_entry(
+        "Formulation",
+        "condensed",
+        Patterns::Selection("condensed|monolithic|both"),
+        "How the interface system is solved. condensed: the multi-body "
+        "method, each block's flexibility at its contact DoFs from unit "
+        "loads, the contact iteration on the pairs' forces and the floating "
+        "blocks' rigid-body amplitudes only. monolithic: the reference, all "
+        "blocks' displacements and the pairs' forces (Lagrange multipliers) "
+        "in one sparse system, factorised at every state iteration, with the "
+        "same stick/slip/open logic. both: the condensed solve gives the "
+        "results, the monolithic one runs beside it from the same load "
+        "increments; their pair states, forces (relative to the largest pair "
+        "force), gaps and slips (relative to the largest displacement) are "
+        "compared at every increment, and both are timed.");
       prm.enter_subsection("Exact traction");
       {
         prm.declare_entry(
@@ -142,6 +157,7 @@ namespace mbfem
         }
       search_distance = prm.get_double("Search distance");
       max_iterations  = prm.get_integer("Maximum iterations");
+      formulation     = prm.get("Formulation");
       prm.enter_subsection("Exact traction");
       {
         compute_traction_errors = prm.get_bool("Compute errors");

@@ -25,13 +25,27 @@ namespace mbfem
 
 
 
+  std::string
+  to_string(const ContactFormulation formulation)
+  {
+    return formulation == ContactFormulation::condensed ? "condensed" :
+                                                          "monolithic";
+  }
+
+
+
   template <int dim>
   ContactSolver<dim>::ContactSolver(std::vector<ContactPair<dim>> pairs,
-                                    const unsigned int max_iterations)
+                                    const unsigned int       max_iterations,
+                                    const ContactFormulation formulation,
+                                    const std::string       &solver_package)
     : contact_pairs(std::move(pairs))
     , max_iterations(max_iterations)
     , n_pairs(contact_pairs.size())
+    , contact_formulation(formulation)
   {
+    if (formulation == ContactFormulation::monolithic)
+      monolithic = std::make_unique<MonolithicSystem<dim>>(solver_package);
     committed.state.resize(n_pairs);
     committed.broken.assign(n_pairs, false);
     committed.tensile_slip.assign(n_pairs, false);
@@ -49,11 +63,21 @@ namespace mbfem
 
 
   template <int dim>
+  ContactFormulation
+  ContactSolver<dim>::formulation() const
+  {
+    return contact_formulation;
+  }
+
+
+
+  template <int dim>
   void
-  ContactSolver<dim>::compute_flexibility(
+  ContactSolver<dim>::setup(
     const std::vector<std::unique_ptr<Block<dim>>> &blocks)
   {
-    const unsigned int n_r = n_pairs * dim;
+    const unsigned int n_r       = n_pairs * dim;
+    const bool         condensed = !monolithic;
 
     alpha_offset.assign(blocks.size(), 0);
     n_alpha.assign(blocks.size(), 0);
@@ -92,22 +116,26 @@ namespace mbfem
         if (dofs.empty())
           continue;
 
-        const FullMatrix<double> c_block = blocks[b]->flexibility(dofs);
-        const auto              &modes   = blocks[b]->floating_modes();
+        // The monolithic system needs no flexibility; the free modes at
+        // the pairs (P) it still needs to name a block it cannot hold.
+        const FullMatrix<double> c_block =
+          condensed ? blocks[b]->flexibility(dofs) : FullMatrix<double>();
+        const auto &modes = blocks[b]->floating_modes();
         for (const auto &[k, sign_k] : sides)
           {
             const auto &dofs_k =
               (sign_k < 0 ? contact_pairs[k].dofs_a : contact_pairs[k].dofs_b);
             for (const auto &[l, sign_l] : sides)
-              {
-                const auto &dofs_l = (sign_l < 0 ? contact_pairs[l].dofs_a :
-                                                   contact_pairs[l].dofs_b);
-                for (unsigned int c = 0; c < dim; ++c)
-                  for (unsigned int e = 0; e < dim; ++e)
-                    c_global(k * dim + c, l * dim + e) +=
-                      sign_k * sign_l *
-                      c_block(index_of[dofs_k[c]], index_of[dofs_l[e]]);
-              }
+              if (condensed)
+                {
+                  const auto &dofs_l = (sign_l < 0 ? contact_pairs[l].dofs_a :
+                                                     contact_pairs[l].dofs_b);
+                  for (unsigned int c = 0; c < dim; ++c)
+                    for (unsigned int e = 0; e < dim; ++e)
+                      c_global(k * dim + c, l * dim + e) +=
+                        sign_k * sign_l *
+                        c_block(index_of[dofs_k[c]], index_of[dofs_l[e]]);
+                }
             for (unsigned int a = 0; a < modes.size(); ++a)
               for (unsigned int c = 0; c < dim; ++c)
                 p_global(k * dim + c, alpha_offset[b] + a) +=
@@ -116,12 +144,12 @@ namespace mbfem
       }
 
     // Into the pairs' frames.
-    flexibility.reinit(n_r, n_r);
+    flexibility.reinit(condensed ? n_r : 0, condensed ? n_r : 0);
     coupling.reinit(n_r, n_alpha_total);
     for (unsigned int k = 0; k < n_pairs; ++k)
       {
         const Tensor<2, dim> &rk = contact_pairs[k].frame;
-        for (unsigned int l = 0; l < n_pairs; ++l)
+        for (unsigned int l = 0; l < n_pairs && condensed; ++l)
           {
             const Tensor<2, dim> &rl = contact_pairs[l].frame;
             for (unsigned int i = 0; i < dim; ++i)
@@ -143,6 +171,13 @@ namespace mbfem
                 value += rk[i][c] * p_global(k * dim + c, a);
               coupling(k * dim + i, a) = value;
             }
+      }
+
+    if (monolithic)
+      {
+        monolithic->setup(blocks, contact_pairs);
+        held = monolithic->held();
+        return;
       }
 
     double trace = 0.;
@@ -171,19 +206,10 @@ namespace mbfem
 
 
   template <int dim>
-  bool
-  ContactSolver<dim>::solve_trial(const Trial    &trial,
-                                  Vector<double> &solution) const
+  std::vector<PairEquation<dim>>
+  ContactSolver<dim>::pair_equations(const Trial &trial) const
   {
-    const unsigned int       n_r = n_pairs * dim;
-    const unsigned int       n   = n_r + n_alpha_total;
-    LAPACKFullMatrix<double> matrix(n, n);
-    Vector<double>           rhs(n);
-    // Unknowns: rho * scale (a displacement) and alpha, so that all entries
-    // are of unit order whatever the units of the model; the singularity
-    // test below then means the same for a rubber and a rock model.
-    const double scale = flexibility_scale;
-
+    std::vector<PairEquation<dim>> equations(n_pairs * dim);
     for (unsigned int k = 0; k < n_pairs; ++k)
       {
         const auto        &pair     = contact_pairs[k];
@@ -193,22 +219,15 @@ namespace mbfem
           trial.tensile_slip[k] ? 0. : pair.friction_coefficient;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            const unsigned int row = k * dim + d;
+            PairEquation<dim> &eq = equations[k * dim + d];
             if (held[k][d] || state == ContactState::open)
-              {
-                matrix(row, row) = 1.; // no force
-                continue;
-              }
-            if (d == 0 || state == ContactState::stick)
+              eq.force_coefficients[d] = 1.; // no force
+            else if (d == 0 || state == ContactState::stick)
               {
                 // Closed: gap zero (normal); stuck: no tangential increment.
-                for (unsigned int j = 0; j < n_r; ++j)
-                  matrix(row, j) = flexibility(row, j) / scale;
-                for (unsigned int a = 0; a < n_alpha_total; ++a)
-                  matrix(row, n_r + a) = coupling(row, a);
-                rhs(row) =
-                  (d == 0 ? -pair.initial_gap : committed_displacement[k][d]) -
-                  external_displacement(row);
+                eq.displacement_coefficients[d] = 1.;
+                eq.value =
+                  (d == 0 ? -pair.initial_gap : committed_displacement[k][d]);
               }
             else
               {
@@ -217,27 +236,90 @@ namespace mbfem
                 // on the direction):
                 //   r_T + mu s r_N + beta (I - s s^T) v = -c A s,
                 // which is the slip law itself once (I - s s^T) v = 0.
-                const double s   = trial.slip_direction[k][d];
-                matrix(row, row) = 1.;
-                matrix(row, k * dim) += mu * s;
-                rhs(row)          = -cohesion * pair.area * s * scale;
+                const double s           = trial.slip_direction[k][d];
+                eq.force_coefficients[d] = 1.;
+                eq.force_coefficients[0] += mu * s;
+                eq.value          = -cohesion * pair.area * s;
                 const double beta = trial.direction_stiffness[k];
                 for (unsigned int e = 1; e < dim && beta > 0.; ++e)
                   {
                     const double m =
                       (d == e ? 1. : 0.) - s * trial.slip_direction[k][e];
-                    const unsigned int source = k * dim + e;
-                    for (unsigned int j = 0; j < n_r; ++j)
-                      matrix(row, j) += beta * m * flexibility(source, j);
-                    for (unsigned int a = 0; a < n_alpha_total; ++a)
-                      matrix(row, n_r + a) +=
-                        beta * m * scale * coupling(source, a);
-                    rhs(row) -= beta * m * scale *
-                                (external_displacement(source) -
-                                 committed_displacement[k][e]);
+                    eq.displacement_coefficients[e] = beta * m;
+                    eq.value += beta * m * committed_displacement[k][e];
                   }
               }
           }
+      }
+    return equations;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::solve_trial(const Trial    &trial,
+                                  Vector<double> &solution,
+                                  Vector<double> &displacement)
+  {
+    const std::vector<PairEquation<dim>> equations = pair_equations(trial);
+    if (monolithic)
+      {
+        // A block the states cannot hold makes the whole system singular;
+        // say so before a sparse LU returns noise.
+        if (!unheld_blocks(trial).empty())
+          return false;
+        return monolithic->solve(equations, solution, displacement);
+      }
+    if (!solve_condensed(equations, solution))
+      return false;
+    displacement = relative_displacement(solution);
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::solve_condensed(
+    const std::vector<PairEquation<dim>> &equations,
+    Vector<double>                       &solution) const
+  {
+    const unsigned int       n_r = n_pairs * dim;
+    const unsigned int       n   = n_r + n_alpha_total;
+    LAPACKFullMatrix<double> matrix(n, n);
+    Vector<double>           rhs(n);
+    // Unknowns: rho * scale (a displacement) and alpha, so that all entries
+    // are of unit order whatever the units of the model; the singularity
+    // test below then means the same for a rubber and a rock model. A row
+    // with force terms is multiplied by scale.
+    const double scale = flexibility_scale;
+
+    for (unsigned int row = 0; row < n_r; ++row)
+      {
+        const unsigned int       k         = row / dim;
+        const PairEquation<dim> &eq        = equations[row];
+        const bool               force_row = eq.has_force_terms();
+        const double             row_scale = (force_row ? scale : 1.);
+        // d_e = C_hat rho + P_hat alpha + Delta_F, with rho = x / scale.
+        double value = eq.value;
+        for (unsigned int e = 0; e < dim; ++e)
+          {
+            const double a = eq.displacement_coefficients[e];
+            if (a != 0.)
+              {
+                const unsigned int source = k * dim + e;
+                for (unsigned int j = 0; j < n_r; ++j)
+                  matrix(row, j) +=
+                    row_scale * a * flexibility(source, j) / scale;
+                for (unsigned int b = 0; b < n_alpha_total; ++b)
+                  matrix(row, n_r + b) += row_scale * a * coupling(source, b);
+                value -= a * external_displacement(source);
+              }
+            if (eq.force_coefficients[e] != 0.)
+              matrix(row, k * dim + e) += eq.force_coefficients[e];
+          }
+        rhs(row) = row_scale * value;
       }
     // Equilibrium of the floating blocks: P^T r = -F_e.
     for (unsigned int a = 0; a < n_alpha_total; ++a)
@@ -283,19 +365,20 @@ namespace mbfem
   typename ContactSolver<dim>::Trial
   ContactSolver<dim>::check(const Trial          &trial,
                             const Vector<double> &solution,
+                            const Vector<double> &displacement,
                             std::vector<double>  &violation,
                             double               &direction_change) const
   {
-    const unsigned int   n_r          = n_pairs * dim;
-    const Vector<double> displacement = relative_displacement(solution);
+    const unsigned int n_r = n_pairs * dim;
 
+    // Scales of the tolerances: what both formulations know (not Delta_F,
+    // which only the condensed one computes), so that they decide alike.
     double force_scale = 1e-300, displacement_scale = 1e-300;
     for (unsigned int i = 0; i < n_r; ++i)
       {
-        force_scale        = std::max(force_scale, std::abs(solution(i)));
-        displacement_scale = std::max({displacement_scale,
-                                       std::abs(displacement(i)),
-                                       std::abs(external_displacement(i))});
+        force_scale = std::max(force_scale, std::abs(solution(i)));
+        displacement_scale =
+          std::max(displacement_scale, std::abs(displacement(i)));
       }
     for (const double f : external_resultant)
       force_scale = std::max(force_scale, std::abs(f));
@@ -463,6 +546,20 @@ namespace mbfem
   std::string
   ContactSolver<dim>::diagnose_singular(const Trial &trial) const
   {
+    const std::string message = unheld_blocks(trial);
+    if (!message.empty())
+      return message;
+    return "\n    The interface system is singular, and no floating "
+           "block is to blame: check for pairs whose nodes are both "
+           "fixed in some direction.";
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactSolver<dim>::unheld_blocks(const Trial &trial) const
+  {
     std::ostringstream message;
     for (unsigned int b = 0; b < n_alpha.size(); ++b)
       {
@@ -535,10 +632,6 @@ namespace mbfem
         message << ": the loads exceed what friction and cohesion can carry, "
                    "or the block has lost contact.";
       }
-    if (message.str().empty())
-      message << "\n    The interface system is singular, and no floating "
-                 "block is to blame: check for pairs whose nodes are both "
-                 "fixed in some direction.";
     return message.str();
   }
 
@@ -550,9 +643,12 @@ namespace mbfem
     const std::vector<std::unique_ptr<Block<dim>>> &blocks,
     const unsigned int                              increment)
   {
-    // Data of this increment: Delta_F in the frames, and F_e.
+    // Data of this increment: Delta_F in the frames (condensed) or the
+    // loads of the monolithic system, and F_e.
     external_displacement.reinit(n_pairs * dim);
-    for (unsigned int k = 0; k < n_pairs; ++k)
+    if (monolithic)
+      monolithic->set_load(blocks);
+    for (unsigned int k = 0; k < n_pairs && !monolithic; ++k)
       {
         const auto    &pair = contact_pairs[k];
         Tensor<1, dim> d;
@@ -594,8 +690,8 @@ namespace mbfem
 
     for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
       {
-        Vector<double> solution;
-        if (!solve_trial(trial, solution))
+        Vector<double> solution, displacement;
+        if (!solve_trial(trial, solution, displacement))
           {
             if (!damped && have_good)
               {
@@ -616,17 +712,17 @@ namespace mbfem
 
         std::vector<double> violation;
         double              direction_change;
-        Trial next = check(trial, solution, violation, direction_change);
+        Trial               next =
+          check(trial, solution, displacement, violation, direction_change);
 
         if (signature(next) == signature(trial) && direction_change < 1e-6)
           {
-            current                = trial;
-            current_solution       = solution;
-            const Vector<double> d = relative_displacement(solution);
+            current          = trial;
+            current_solution = solution;
             current_displacement.assign(n_pairs, Tensor<1, dim>());
             for (unsigned int k = 0; k < n_pairs; ++k)
               for (unsigned int i = 0; i < dim; ++i)
-                current_displacement[k][i] = d(k * dim + i);
+                current_displacement[k][i] = displacement(k * dim + i);
             current.slip_direction = next.slip_direction;
             return iteration;
           }
@@ -767,6 +863,18 @@ namespace mbfem
     for (unsigned int a = 0; a < n_alpha[b]; ++a)
       alpha[a] = current_solution(n_pairs * dim + alpha_offset[b] + a);
     return alpha;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::block_solution(const unsigned int b,
+                                     const Block<dim>  &block,
+                                     Vector<double>    &solution) const
+  {
+    Assert(monolithic, ExcInternalError());
+    monolithic->block_solution(b, block, solution);
   }
 
 

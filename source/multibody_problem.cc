@@ -1,6 +1,8 @@
 #include <mbfem/multibody_problem.h>
 #include <mbfem/parameters.h>
 
+#include <deal.II/base/timer.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -70,18 +72,26 @@ namespace mbfem
   void
   MultiBodyProblem<dim>::setup_blocks()
   {
+    // The monolithic formulation alone factorises no block: its one system
+    // holds them all.
+    const bool factorise = parameters.contact.interfaces.empty() ||
+                           parameters.contact.formulation != "monolithic";
     parameters.boundary_conditions.set_time(0.);
     for (const auto &block : blocks)
       {
         {
           TimerOutput::Scope t(timer, "assembly");
           block->setup_system(parameters.boundary_conditions);
-          block->assemble_stiffness();
+          if (factorise)
+            block->assemble_stiffness();
         }
-        {
-          TimerOutput::Scope t(timer, "factorisation");
-          block->factorize();
-        }
+        if (factorise)
+          {
+            TimerOutput::Scope t(timer, "factorisation");
+            Timer              clock;
+            block->factorize();
+            condensed_seconds += clock.wall_time();
+          }
       }
   }
 
@@ -146,12 +156,45 @@ namespace mbfem
             "them, or declare its interfaces in 'Contact/Interfaces'."));
       }
 
+    const std::string formulation = parameters.contact.formulation;
     if (!pairs.empty())
       {
-        TimerOutput::Scope t(timer, "flexibility");
-        contact = std::make_unique<ContactSolver<dim>>(
-          pairs, parameters.contact.max_iterations);
-        contact->compute_flexibility(blocks);
+        const std::string &package = parameters.linear_solver.package;
+        if (formulation != "monolithic")
+          {
+            TimerOutput::Scope t(timer, "flexibility");
+            Timer              clock;
+            contact = std::make_unique<ContactSolver<dim>>(
+              pairs,
+              parameters.contact.max_iterations,
+              ContactFormulation::condensed,
+              package);
+            contact->setup(blocks);
+            condensed_seconds += clock.wall_time();
+          }
+        if (formulation != "condensed")
+          {
+            TimerOutput::Scope t(timer, "monolithic assembly");
+            Timer              clock;
+            auto               solver = std::make_unique<ContactSolver<dim>>(
+              pairs,
+              parameters.contact.max_iterations,
+              ContactFormulation::monolithic,
+              package);
+            solver->setup(blocks);
+            monolithic_seconds += clock.wall_time();
+            (formulation == "monolithic" ? contact : reference) =
+              std::move(solver);
+          }
+        pcout << "  contact formulation: " << formulation;
+        if (formulation != "condensed")
+          {
+            types::global_dof_index n = pairs.size() * dim;
+            for (const auto &block : blocks)
+              n += block->n_dofs();
+            pcout << " (monolithic system of " << n << " unknowns)";
+          }
+        pcout << "\n";
       }
 
     std::filesystem::create_directories(parameters.output.directory);
@@ -168,40 +211,64 @@ namespace mbfem
           }
       }
 
+    const bool condensed =
+      !contact || contact->formulation() == ContactFormulation::condensed;
     const LoadHistory &history = parameters.load_history;
     for (unsigned int k = 1; k <= history.n_increments; ++k)
       {
         const double time       = history.time(k);
-        unsigned int iterations = 0;
+        unsigned int iterations = 0, reference_iterations = 0;
         {
           TimerOutput::Scope t(timer, "load response");
           for (const auto &block : blocks)
             {
               block->assemble_load(parameters.boundary_conditions, time);
-              block->solve();
+              if (condensed)
+                {
+                  Timer clock;
+                  block->solve();
+                  condensed_seconds += clock.wall_time();
+                }
             }
         }
         if (contact)
           {
             {
               TimerOutput::Scope t(timer, "contact iterations");
-              iterations = contact->solve_increment(blocks, k);
+              Timer              clock;
+              iterations           = contact->solve_increment(blocks, k);
+              last_contact_seconds = clock.wall_time();
+              (condensed ? condensed_seconds : monolithic_seconds) +=
+                last_contact_seconds;
             }
+            if (reference)
+              {
+                TimerOutput::Scope t(timer, "monolithic reference");
+                Timer              clock;
+                reference_iterations   = reference->solve_increment(blocks, k);
+                last_reference_seconds = clock.wall_time();
+                monolithic_seconds += last_reference_seconds;
+              }
             if (dim == 3 && contact->count(ContactState::slip) > 0)
               pcout << "    friction against the slip made: largest angle "
                     << std::fixed << std::setprecision(1)
                     << contact->misalignment() << " degrees"
                     << std::defaultfloat << std::setprecision(6) << "\n";
             TimerOutput::Scope t(timer, "field recovery");
+            Timer              clock;
             for (unsigned int b = 0; b < blocks.size(); ++b)
-              {
-                std::vector<types::global_dof_index> dofs;
-                std::vector<double>                  forces;
-                contact->forces_on_block(b, dofs, forces);
-                blocks[b]->add_point_forces(dofs, forces);
-                blocks[b]->solve(contact->floating_amplitudes(b));
-              }
-            contact->commit();
+              if (condensed)
+                {
+                  std::vector<types::global_dof_index> dofs;
+                  std::vector<double>                  forces;
+                  contact->forces_on_block(b, dofs, forces);
+                  blocks[b]->add_point_forces(dofs, forces);
+                  blocks[b]->solve(contact->floating_amplitudes(b));
+                }
+              else
+                contact->block_solution(b, *blocks[b], blocks[b]->solution);
+            (condensed ? condensed_seconds : monolithic_seconds) +=
+              clock.wall_time();
           }
         for (const auto &block : blocks)
           AssertThrow(std::isfinite(block->solution.l2_norm()),
@@ -215,9 +282,17 @@ namespace mbfem
                         parameters.output.directory + "."));
 
         print_increment(k, time, iterations);
+        if (reference)
+          compare_formulations(k);
         std::string pair_file;
         if (contact)
-          pair_file = write_pairs(k, time);
+          {
+            pair_file = write_pairs(k, time);
+            write_summary(k, time, iterations, reference_iterations);
+            contact->commit();
+            if (reference)
+              reference->commit();
+          }
         if (writer)
           {
             TimerOutput::Scope       t(timer, "output");
@@ -233,6 +308,35 @@ namespace mbfem
 
     if (contact)
       print_interface_summary();
+    if (reference)
+      {
+        const bool agree =
+          state_differences == 0 && largest_force_difference <= 1e-6 &&
+          largest_gap_difference <= 1e-6 && largest_slip_difference <= 1e-6;
+        pcout << "  condensed against monolithic over all increments: "
+              << "states equal at every increment "
+              << (state_differences == 0 ? "yes" : "NO")
+              << "; largest differences (relative): forces "
+              << format_difference(largest_force_difference) << ", gaps "
+              << format_difference(largest_gap_difference) << ", slips "
+              << format_difference(largest_slip_difference) << "; within 1e-6 "
+              << (agree ? "yes" : "NO") << "\n";
+      }
+    if (contact && !parameters.run.test_mode)
+      {
+        pcout << "  time of the contact formulation(s) alone (wall, s): ";
+        if (formulation != "monolithic")
+          pcout << "condensed " << std::setprecision(3) << condensed_seconds
+                << " (factorisation, flexibility, load response, contact "
+                   "iterations, recovery)";
+        if (formulation == "both")
+          pcout << "; ";
+        if (formulation != "condensed")
+          pcout << "monolithic " << std::setprecision(3) << monolithic_seconds
+                << " (assembly, contact iterations with one sparse LU "
+                   "each, recovery)";
+        pcout << std::setprecision(6) << "\n";
+      }
     if (parameters.exact_solution.enabled)
       print_errors(history.time(history.n_increments));
 
@@ -243,9 +347,157 @@ namespace mbfem
     if (contact && !parameters.run.test_mode)
       pcout << "  contact pairs per increment in "
             << parameters.output.directory << "/" << parameters.output.base_name
-            << "-pairs-*.csv\n";
+            << "-pairs-*.csv, a line per increment in "
+            << parameters.output.directory << "/" << parameters.output.base_name
+            << "-summary.csv\n";
     if (!parameters.run.test_mode)
       timer.print_summary();
+  }
+
+
+
+  template <int dim>
+  double
+  MultiBodyProblem<dim>::max_slip(const ContactSolver<dim> &solver)
+  {
+    double largest = 0.;
+    for (unsigned int k = 0; k < solver.pairs().size(); ++k)
+      largest = std::max(largest, solver.slip(k).norm());
+    return largest;
+  }
+
+
+
+  template <int dim>
+  std::string
+  MultiBodyProblem<dim>::format_difference(const double e) const
+  {
+    std::ostringstream s;
+    if (e < 1e-9 && parameters.run.test_mode)
+      s << "below 1e-9";
+    else
+      s << std::scientific << std::setprecision(2) << e;
+    return s.str();
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::compare_formulations(const unsigned int k)
+  {
+    // Forces relative to the largest pair force; gaps and slips relative to
+    // the largest displacement of the model (while all pairs stick, gaps
+    // and slips are round-off of zero and cannot be their own scale).
+    const unsigned int n_pairs     = contact->pairs().size();
+    double             force_scale = 1e-300, displacement_scale = 1e-300;
+    for (unsigned int i = 0; i < n_pairs; ++i)
+      force_scale = std::max(force_scale, contact->local_force(i).norm());
+    for (const auto &block : blocks)
+      displacement_scale =
+        std::max(displacement_scale, block->max_displacement());
+    double       force = 0., gap = 0., slip = 0.;
+    unsigned int differ = 0;
+    for (unsigned int i = 0; i < n_pairs; ++i)
+      {
+        if (contact->state(i) != reference->state(i) ||
+            contact->broken(i) != reference->broken(i))
+          ++differ;
+        force = std::max(
+          force,
+          (contact->local_force(i) - reference->local_force(i)).norm() /
+            force_scale);
+        gap  = std::max(gap,
+                       std::abs(contact->gap(i) - reference->gap(i)) /
+                         displacement_scale);
+        slip = std::max(slip,
+                        (contact->slip(i) - reference->slip(i)).norm() /
+                          displacement_scale);
+      }
+    largest_force_difference = std::max(largest_force_difference, force);
+    largest_gap_difference   = std::max(largest_gap_difference, gap);
+    largest_slip_difference  = std::max(largest_slip_difference, slip);
+    state_differences += differ;
+    last_comparison = {{static_cast<double>(differ), force, gap, slip}};
+
+    // Round-off differences vary by machine: below 1e-9 they are printed as
+    // such, so that the tests compare what matters.
+    const auto difference = [this](const double e) {
+      return format_difference(e);
+    };
+    pcout << "    monolithic reference: stick/slip/open "
+          << reference->count(ContactState::stick) << "/"
+          << reference->count(ContactState::slip) << "/"
+          << reference->count(ContactState::open) << ", states differ at "
+          << differ << " of " << n_pairs << " pairs; differences (relative) "
+          << "forces " << difference(force) << ", gaps " << difference(gap)
+          << ", slips " << difference(slip) << "\n";
+    (void)k;
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::write_summary(const unsigned int k,
+                                       const double       time,
+                                       const unsigned int iterations,
+                                       const unsigned int reference_iterations)
+  {
+    if (k == 1)
+      {
+        summary_csv = "# " + to_string(contact->formulation()) +
+                      " formulation" +
+                      (reference ? " with the monolithic reference" : "") +
+                      "; slip = tangential relative displacement; seconds = "
+                      "wall time of the increment's contact iterations\n";
+        summary_csv += "increment,t,iterations,stick,slip,open,max_gap,"
+                       "max_slip,max_normal_traction,seconds";
+        if (reference)
+          summary_csv += ",reference_iterations,reference_seconds,"
+                         "states_differ,force_difference,gap_difference,"
+                         "slip_difference";
+        summary_csv += "\n";
+      }
+    double max_gap = 0., max_p = 0.;
+    for (unsigned int i = 0; i < contact->pairs().size(); ++i)
+      {
+        max_gap = std::max(max_gap, contact->gap(i));
+        max_p   = std::max(max_p,
+                         contact->local_force(i)[0] / contact->pairs()[i].area);
+      }
+    char buffer[256];
+    std::snprintf(buffer,
+                  sizeof(buffer),
+                  "%u,%.10g,%u,%u,%u,%u,%.10e,%.10e,%.10e,%.4f",
+                  k,
+                  time,
+                  iterations,
+                  contact->count(ContactState::stick),
+                  contact->count(ContactState::slip),
+                  contact->count(ContactState::open),
+                  max_gap,
+                  max_slip(*contact),
+                  max_p,
+                  last_contact_seconds);
+    summary_csv += buffer;
+    if (reference)
+      {
+        std::snprintf(buffer,
+                      sizeof(buffer),
+                      ",%u,%.4f,%u,%.3e,%.3e,%.3e",
+                      reference_iterations,
+                      last_reference_seconds,
+                      static_cast<unsigned int>(last_comparison[0]),
+                      last_comparison[1],
+                      last_comparison[2],
+                      last_comparison[3]);
+        summary_csv += buffer;
+      }
+    summary_csv += "\n";
+    write_file_atomically(parameters.output.directory + "/" +
+                            parameters.output.base_name + "-summary.csv",
+                          summary_csv);
   }
 
 
@@ -285,7 +537,8 @@ namespace mbfem
               << contact->count(ContactState::open) << ", p in ["
               << std::scientific << std::setprecision(6) << min_normal << ", "
               << max_normal << "], max |q| = " << max_tangential
-              << ", max gap = " << max_gap << ", ";
+              << ", max gap = " << max_gap
+              << ", max slip = " << max_slip(*contact) << ", ";
       }
     pcout << "max |u| = " << std::scientific << std::setprecision(6) << max_u
           << ", max von Mises = " << max_von_mises << std::defaultfloat

@@ -13,6 +13,8 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -163,6 +165,32 @@ namespace mbfem
     compute_errors(const Function<dim> &exact_displacement,
                    const Function<dim> &exact_stress) const;
 
+    /**
+     * The physical constraints alone (no pins), with the prescribed values
+     * of the last assemble_load().
+     */
+    const AffineConstraints<double> &
+    get_physical_constraints() const;
+
+    /**
+     * For the monolithic reference formulation: the stiffness under the
+     * physical constraints alone, without pins, so singular for a floating
+     * block (its free modes are held by the contact multipliers of the
+     * whole system instead). Constrained rows keep a diagonal entry.
+     */
+    void
+    assemble_unpinned_stiffness(SparsityPattern      &pattern,
+                                SparseMatrix<double> &matrix) const;
+
+    /**
+     * The external load of the last assemble_load() condensed with the
+     * physical constraints alone (the lifting of the prescribed
+     * displacements included), the right-hand side that goes with
+     * assemble_unpinned_stiffness().
+     */
+    const Vector<double> &
+    unpinned_load() const;
+
     /** Largest displacement magnitude over the support points. */
     double
     max_displacement() const;
@@ -226,6 +254,7 @@ namespace mbfem
     DirectSolver                         direct_solver;
     Vector<double>                       load;
     Vector<double>                       external_load;
+    Vector<double>                       physical_load;
   };
 } // namespace mbfem
 

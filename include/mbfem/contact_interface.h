@@ -44,6 +44,8 @@ namespace mbfem
     std::vector<InterfaceDeclaration> interfaces;
     double                            search_distance = 0.;
     unsigned int                      max_iterations  = 100;
+    /** "condensed", "monolithic" or "both" (see the entry's text). */
+    std::string formulation = "condensed";
 
     /** Closed-form contact tractions to measure the pairs against. */
     bool compute_traction_errors = false;

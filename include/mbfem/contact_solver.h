@@ -3,6 +3,8 @@
 
 #include <mbfem/block.h>
 #include <mbfem/contact_interface.h>
+#include <mbfem/monolithic_system.h>
+#include <mbfem/pair_equation.h>
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
@@ -27,6 +29,20 @@ namespace mbfem
   to_string(const ContactState state);
 
   /**
+   * How the interface system is solved: condensed to the contact DoFs
+   * through the blocks' flexibilities (the multi-body method), or as one
+   * monolithic Lagrange-multiplier system of all blocks (the reference).
+   */
+  enum class ContactFormulation : unsigned char
+  {
+    condensed,
+    monolithic
+  };
+
+  std::string
+  to_string(const ContactFormulation formulation);
+
+  /**
    * The interface system of the multi-body method (paper eqs. 7-10, 15 and
    * Table 1), generalised to any number of blocks and to 3D.
    *
@@ -43,22 +59,37 @@ namespace mbfem
    * gap, no tangential increment; slip: no normal gap, |r_T| = c A + mu r_N
    * against the slip; open: r = 0); the states are iterated within a load
    * increment until every pair satisfies its check.
+   *
+   * With ContactFormulation::monolithic the same state iteration runs on
+   * the same PairEquation rows, but d comes from a monolithic
+   * Lagrange-multiplier system of all blocks (MonolithicSystem) instead of
+   * C_a and P: a second road to the same discrete solution.
    */
   template <int dim>
   class ContactSolver
   {
   public:
-    ContactSolver(std::vector<ContactPair<dim>> pairs,
-                  const unsigned int            max_iterations);
-
-    /** The dense flexibility C_a and coupling P, from every block. */
-    void
-    compute_flexibility(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
+    ContactSolver(
+      std::vector<ContactPair<dim>> pairs,
+      const unsigned int            max_iterations,
+      const ContactFormulation      formulation = ContactFormulation::condensed,
+      const std::string            &solver_package = "Amesos_Klu");
 
     /**
-     * Solves one load increment. Each block's solution must hold its
-     * response u_F to the external load of this increment (and its
-     * external_load_resultant() that load's F_e). Returns the number of
+     * Condensed: the dense flexibility C_a and coupling P, from every
+     * block's factorisation. Monolithic: the system of all blocks (which
+     * must have had assemble_load() once); no block is factorised.
+     */
+    void
+    setup(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
+
+    ContactFormulation
+    formulation() const;
+
+    /**
+     * Solves one load increment. Each block must have the load of this
+     * increment (assemble_load()); condensed, its solution must hold its
+     * response u_F to that load. Returns the number of
      * state iterations; throws with a message naming blocks or pairs when
      * the increment has no consistent solution.
      */
@@ -76,9 +107,15 @@ namespace mbfem
                     std::vector<types::global_dof_index> &dofs,
                     std::vector<double>                  &forces) const;
 
-    /** Amplitudes of block @p b's floating modes. */
+    /** Amplitudes of block @p b's floating modes (condensed). */
     std::vector<double>
     floating_amplitudes(const unsigned int b) const;
+
+    /** Monolithic: block @p b's displacement from the converged solve. */
+    void
+    block_solution(const unsigned int b,
+                   const Block<dim>  &block,
+                   Vector<double>    &solution) const;
 
     const std::vector<ContactPair<dim>> &
     pairs() const;
@@ -133,14 +170,29 @@ namespace mbfem
       std::vector<double> direction_stiffness;
     };
 
-    /** Assembles and solves the system of @p trial into rho, alpha. */
+    /** The rows (Table 1) of every pair direction for @p trial. */
+    std::vector<PairEquation<dim>>
+    pair_equations(const Trial &trial) const;
+
+    /**
+     * Solves the system of @p trial: the forces rho (condensed: then the
+     * alphas) into @p solution, and d in the pairs' frames.
+     */
     bool
-    solve_trial(const Trial &trial, Vector<double> &solution) const;
+    solve_trial(const Trial    &trial,
+                Vector<double> &solution,
+                Vector<double> &displacement);
+
+    /** The condensed system: rho and alpha from C_hat, P_hat. */
+    bool
+    solve_condensed(const std::vector<PairEquation<dim>> &equations,
+                    Vector<double>                       &solution) const;
 
     /** Checks every pair; returns the new trial and violations. */
     Trial
     check(const Trial          &trial,
           const Vector<double> &solution,
+          const Vector<double> &displacement,
           std::vector<double>  &violation,
           double               &direction_change) const;
 
@@ -151,6 +203,13 @@ namespace mbfem
     Vector<double>
     relative_displacement(const Vector<double> &solution) const;
 
+    /**
+     * Which floating blocks the pairs of @p trial cannot hold, and in which
+     * modes; empty if every block is held.
+     */
+    std::string
+    unheld_blocks(const Trial &trial) const;
+
     /** Message for a singular system: which block is not held. */
     std::string
     diagnose_singular(const Trial &trial) const;
@@ -158,9 +217,11 @@ namespace mbfem
     std::string
     signature(const Trial &trial) const;
 
-    const std::vector<ContactPair<dim>> contact_pairs;
-    const unsigned int                  max_iterations;
-    const unsigned int                  n_pairs;
+    const std::vector<ContactPair<dim>>    contact_pairs;
+    const unsigned int                     max_iterations;
+    const unsigned int                     n_pairs;
+    const ContactFormulation               contact_formulation;
+    std::unique_ptr<MonolithicSystem<dim>> monolithic;
 
     /** Blocks' floating modes: offset of each block's alphas, and count. */
     std::vector<unsigned int>                alpha_offset;
@@ -178,7 +239,7 @@ namespace mbfem
     std::vector<std::array<bool, dim>> held;
 
     /** Data of the current increment. */
-    Vector<double>      external_displacement; // R Delta_F
+    Vector<double>      external_displacement; // R Delta_F (condensed)
     std::vector<double> external_resultant;    // F_e, per alpha
 
     /** Converged state and the solution of the current increment. */

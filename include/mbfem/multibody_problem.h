@@ -7,7 +7,9 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace mbfem
@@ -69,11 +71,59 @@ namespace mbfem
     std::string
     write_pairs(const unsigned int k, const double time) const;
 
+    /**
+     * Formulation "both": the monolithic reference against the condensed
+     * solve of increment @p k, pair by pair; prints and records it.
+     */
+    void
+    compare_formulations(const unsigned int k);
+
+    /**
+     * A relative difference for the screen; in test mode, round-off (below
+     * 1e-9), whose digits vary by machine, as "below 1e-9".
+     */
+    std::string
+    format_difference(const double e) const;
+
+    /** One line per increment in <base>-summary.csv (rewritten whole). */
+    void
+    write_summary(const unsigned int k,
+                  const double       time,
+                  const unsigned int iterations,
+                  const unsigned int reference_iterations);
+
+    /** Largest tangential relative displacement over the pairs. */
+    static double
+    max_slip(const ContactSolver<dim> &solver);
+
     Parameters<dim>                         &parameters;
     ConditionalOStream                      &pcout;
     TimerOutput                              timer;
     std::vector<std::unique_ptr<Block<dim>>> blocks;
     std::unique_ptr<ContactSolver<dim>>      contact;
+    /** Formulation "both": the monolithic solve beside the condensed one. */
+    std::unique_ptr<ContactSolver<dim>> reference;
+
+    /**
+     * Wall time of the work of each formulation alone (not the mesh, the
+     * load vectors or the output, which both share): condensed = block
+     * factorisation, flexibilities, load responses, contact iterations,
+     * field recovery; monolithic = its assembly and contact iterations
+     * (one sparse LU each) and field recovery.
+     */
+    double condensed_seconds  = 0.;
+    double monolithic_seconds = 0.;
+
+    /** Largest differences (relative) over the increments, "both". */
+    double       largest_force_difference = 0.;
+    double       largest_gap_difference   = 0.;
+    double       largest_slip_difference  = 0.;
+    unsigned int state_differences        = 0;
+    /** What this increment's comparison found, for the summary CSV. */
+    std::array<double, 4> last_comparison        = {{0., 0., 0., 0.}};
+    double                last_contact_seconds   = 0.;
+    double                last_reference_seconds = 0.;
+    std::string           summary_csv;
   };
 } // namespace mbfem
 
