@@ -25,7 +25,7 @@ namespace mbfem
     n_displacements = 0;
     patterns.clear();
     stiffness.clear();
-    double       trace = 0.;
+    double       trace  = 0.;
     unsigned int n_free = 0;
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
@@ -102,7 +102,7 @@ namespace mbfem
                 // u at the pair's node through the constraints:
                 // u_i = sum_j c_ij u_j + inhomogeneity.
                 std::vector<std::pair<types::global_dof_index, double>> u_i;
-                double                                                  u_0 = 0.;
+                double u_0 = 0.;
                 if (constraints.is_constrained(dofs[c]))
                   {
                     u_i = *constraints.get_constraint_entries(dofs[c]);
@@ -199,7 +199,9 @@ namespace mbfem
               columns.push_back(offset[b] + entry->column());
               values.push_back(entry->value());
             }
-          matrix.add(offset[b] + i, columns.size(), columns.data(),
+          matrix.add(offset[b] + i,
+                     columns.size(),
+                     columns.data(),
                      values.data());
           rhs(offset[b] + i) = load(offset[b] + i);
         }
@@ -223,7 +225,9 @@ namespace mbfem
             if (a != 0.)
               {
                 for (const auto &term : terms[k * dim + e])
-                  matrix.add(row, term.column, row_scale * a * term.coefficient);
+                  matrix.add(row,
+                             term.column,
+                             row_scale * a * term.coefficient);
                 value -= a * constant[k * dim + e];
               }
             if (eq.force_coefficients[e] != 0.)
@@ -253,8 +257,8 @@ namespace mbfem
     displacement.reinit(n_r);
     for (unsigned int r = 0; r < n_r; ++r)
       {
-        forces(r)   = ks * solution(n_displacements + r);
-        double d    = constant[r];
+        forces(r) = ks * solution(n_displacements + r);
+        double d  = constant[r];
         for (const auto &term : terms[r])
           d += term.coefficient * solution(term.column);
         displacement(r) = d;
