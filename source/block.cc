@@ -114,6 +114,37 @@ namespace mbfem
 
   template <int dim>
   void
+  Block<dim>::set_initial_state(const InSituStress *in_situ_stress,
+                                const Excavation   *excavation_data)
+  {
+    in_situ =
+      (in_situ_stress != nullptr && in_situ_stress->enabled ? in_situ_stress :
+                                                              nullptr);
+    excavation = excavation_data;
+  }
+
+
+
+  template <int dim>
+  const InSituStress *
+  Block<dim>::get_in_situ_stress() const
+  {
+    return in_situ;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  Block<dim>::initial_stress(const Point<dim> &point) const
+  {
+    return in_situ ? in_situ->stress(point) : SymmetricTensor<2, dim>();
+  }
+
+
+
+  template <int dim>
+  void
   Block<dim>::make_constraints(
     const BoundaryConditions<dim> &boundary_conditions)
   {
@@ -387,6 +418,7 @@ namespace mbfem
                                      fe,
                                      QGauss<dim - 1>(fe.degree + 2),
                                      update_values | update_quadrature_points |
+                                       update_normal_vectors |
                                        update_JxW_values);
     FEValues<dim>                        stiffness_values(mapping,
                                    fe,
@@ -416,7 +448,49 @@ namespace mbfem
             for (unsigned int i = 0; i < n; ++i)
               cell_load(i) +=
                 fe_values[displacement].value(i, q) * b * fe_values.JxW(q);
+            // The initial stress: -int B^T sigma_0, which gravity and the
+            // boundaries balance in the geostatic state.
+            if (in_situ)
+              {
+                const SymmetricTensor<2, dim> sigma_0 =
+                  initial_stress(fe_values.quadrature_point(q));
+                for (unsigned int i = 0; i < n; ++i)
+                  cell_load(i) -=
+                    (fe_values[displacement].symmetric_gradient(i, q) *
+                     sigma_0) *
+                    fe_values.JxW(q);
+              }
           }
+
+        // Far-field boundaries held by the in-situ stress, and the faces
+        // of an excavation with the support of the removed rock, released
+        // as t goes from 0 to 1.
+        if (in_situ)
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                double factor = 0.;
+                if (in_situ->stress_boundaries.count(face->boundary_id()) == 1)
+                  factor = 1.;
+                else if (excavation != nullptr &&
+                         excavation->released_boundaries.count(
+                           face->boundary_id()) == 1)
+                  factor = 1. - Excavation::released(time);
+                if (factor == 0.)
+                  continue;
+                fe_face_values.reinit(cell, face);
+                for (const unsigned int q :
+                     fe_face_values.quadrature_point_indices())
+                  {
+                    const Tensor<1, dim> t =
+                      factor *
+                      (initial_stress(fe_face_values.quadrature_point(q)) *
+                       fe_face_values.normal_vector(q));
+                    for (unsigned int i = 0; i < n; ++i)
+                      cell_load(i) += fe_face_values[displacement].value(i, q) *
+                                      t * fe_face_values.JxW(q);
+                  }
+              }
 
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() &&
@@ -764,8 +838,9 @@ namespace mbfem
             const Point<dim> &x = fe_values.quadrature_point(q);
             exact_displacement.vector_value(x, u_exact);
             exact_stress.vector_value(x, sigma_exact);
-            const SymmetricTensor<2, dim> sigma = material.stress(eps[q]);
-            const double                  JxW   = fe_values.JxW(q);
+            const SymmetricTensor<2, dim> sigma =
+              material.stress(eps[q]) + initial_stress(x);
+            const double JxW = fe_values.JxW(q);
             for (unsigned int i = 0; i < dim; ++i)
               {
                 u_error2 +=
@@ -826,7 +901,7 @@ namespace mbfem
     FEValues<dim>                        fe_values(mapping,
                             fe,
                             QGauss<dim>(fe.degree + 1),
-                            update_gradients);
+                            update_gradients | update_quadrature_points);
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> eps(fe_values.n_quadrature_points);
     double                               result = 0.;
@@ -834,9 +909,13 @@ namespace mbfem
       {
         fe_values.reinit(cell);
         fe_values[displacement].get_function_symmetric_gradients(solution, eps);
-        for (const auto &e : eps)
-          result =
-            std::max(result, von_mises_stress(material.stress_3d<dim>(e)));
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            SymmetricTensor<2, 3> sigma = material.stress_3d<dim>(eps[q]);
+            if (in_situ)
+              sigma += in_situ->stress_3d(fe_values.quadrature_point(q));
+            result = std::max(result, von_mises_stress(sigma));
+          }
       }
     return result;
   }

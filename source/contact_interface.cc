@@ -79,7 +79,8 @@ namespace mbfem
           "2D: at the end of the run, measure the pairs' normal traction p "
           "and tangential traction q (force / tributary area, on side b, "
           "tangent t = (-n_y, n_x)) against the functions below, as relative "
-          "L2 errors weighted by the pairs' areas, per interface.");
+          "L2 errors weighted by the pairs' areas, per interface (q relative to "
+          "the norm of p where the exact q is zero).");
         prm.enter_subsection("Normal");
         Functions::ParsedFunction<2>::declare_parameters(prm, 1);
         prm.leave_subsection();

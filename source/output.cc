@@ -53,8 +53,10 @@ namespace mbfem
 
 
   template <int dim>
-  StressPostprocessor<dim>::StressPostprocessor(const Material &material)
+  StressPostprocessor<dim>::StressPostprocessor(const Material     &material,
+                                                const InSituStress *in_situ)
     : material(material)
+    , in_situ(in_situ != nullptr && in_situ->enabled ? in_situ : nullptr)
   {}
 
 
@@ -70,8 +72,9 @@ namespace mbfem
         Tensor<2, dim> grad;
         for (unsigned int d = 0; d < dim; ++d)
           grad[d] = inputs.solution_gradients[p][d];
-        const SymmetricTensor<2, 3> sigma =
-          material.stress_3d<dim>(symmetrize(grad));
+        SymmetricTensor<2, 3> sigma = material.stress_3d<dim>(symmetrize(grad));
+        if (in_situ)
+          sigma += in_situ->stress_3d(inputs.evaluation_points[p]);
 
         unsigned int k = 0;
         for (unsigned int i = 0; i < dim; ++i)
@@ -122,7 +125,8 @@ namespace mbfem
   UpdateFlags
   StressPostprocessor<dim>::get_needed_update_flags() const
   {
-    return update_gradients;
+    return in_situ ? update_gradients | update_quadrature_points :
+                     update_gradients;
   }
 
 
@@ -152,7 +156,8 @@ namespace mbfem
                              names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
-    const StressPostprocessor<dim> stress(block.material);
+    const StressPostprocessor<dim> stress(block.material,
+                                          block.get_in_situ_stress());
     data_out.add_data_vector(block.solution, stress);
 
     Vector<float> block_id(block.triangulation.n_active_cells());

@@ -54,6 +54,8 @@ namespace mbfem
     OutputParameters::declare_parameters(prm);
     OrderStudyParameters::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
+    InSituStress::declare_parameters(prm);
+    Excavation::declare_parameters(prm);
   }
 
 
@@ -75,6 +77,14 @@ namespace mbfem
     output.parse_parameters(prm);
     order_study.parse_parameters(prm);
     contact.parse_parameters(prm);
+    in_situ_stress.parse_parameters(prm);
+    excavation.parse_parameters(prm);
+    AssertThrow(excavation.excavated_ids.empty() &&
+                    excavation.released_boundaries.empty() ||
+                  in_situ_stress.enabled,
+                ExcMessage("Excavation: an excavation releases the in-situ "
+                           "stress, so it needs 'In-situ stress/Enabled = "
+                           "true'."));
 
     AssertThrow(run.mode != "order study" || exact_solution.enabled,
                 ExcMessage("Mode = order study measures errors: set 'Exact "

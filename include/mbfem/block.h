@@ -3,6 +3,7 @@
 
 #include <mbfem/boundary_conditions.h>
 #include <mbfem/direct_solver.h>
+#include <mbfem/in_situ_stress.h>
 #include <mbfem/material.h>
 
 #include <deal.II/base/function.h>
@@ -82,6 +83,19 @@ namespace mbfem
      */
     void
     setup_system(const BoundaryConditions<dim> &boundary_conditions);
+
+    /**
+     * An initial (in-situ) stress and an excavation to release: both enter
+     * the load of assemble_load(), the first also the stresses this block
+     * reports. Must outlive the block.
+     */
+    void
+    set_initial_state(const InSituStress *in_situ,
+                      const Excavation   *excavation);
+
+    /** The in-situ stress, or nullptr. */
+    const InSituStress *
+    get_in_situ_stress() const;
 
     void
     assemble_stiffness();
@@ -244,6 +258,12 @@ namespace mbfem
     void
     choose_pins();
 
+    /** sigma_0 at @p point, zero without an in-situ stress. */
+    SymmetricTensor<2, dim>
+    initial_stress(const Point<dim> &point) const;
+
+    const InSituStress                  *in_situ    = nullptr;
+    const Excavation                    *excavation = nullptr;
     AffineConstraints<double>            physical_constraints;
     AffineConstraints<double>            constraints;
     AffineConstraints<double>            homogeneous_constraints;

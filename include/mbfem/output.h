@@ -2,6 +2,7 @@
 #define mbfem_output_h
 
 #include <mbfem/block.h>
+#include <mbfem/in_situ_stress.h>
 #include <mbfem/material.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -34,12 +35,15 @@ namespace mbfem
    * from the FE displacement gradient: the stress tensor, the plane-strain
    * sigma_zz (2D), the principal stresses sigma_1 >= sigma_2 >= sigma_3
    * (tension positive, as in the paper's figures) and the von Mises stress.
+   * With an in-situ stress, the stress is the total one: sigma_0 plus the
+   * stress of the displacement.
    */
   template <int dim>
   class StressPostprocessor : public DataPostprocessor<dim>
   {
   public:
-    explicit StressPostprocessor(const Material &material);
+    explicit StressPostprocessor(const Material     &material,
+                                 const InSituStress *in_situ = nullptr);
 
     void
     evaluate_vector_field(
@@ -56,7 +60,8 @@ namespace mbfem
     get_needed_update_flags() const override;
 
   private:
-    const Material material;
+    const Material      material;
+    const InSituStress *in_situ;
   };
 
   /**

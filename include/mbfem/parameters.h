@@ -6,6 +6,7 @@
 #include <mbfem/contact_interface.h>
 #include <mbfem/direct_solver.h>
 #include <mbfem/exact_solution.h>
+#include <mbfem/in_situ_stress.h>
 #include <mbfem/load_history.h>
 #include <mbfem/material.h>
 #include <mbfem/mesh.h>
@@ -63,6 +64,8 @@ namespace mbfem
     OutputParameters                       output;
     OrderStudyParameters                   order_study;
     ContactParameters                      contact;
+    InSituStress                           in_situ_stress;
+    Excavation                             excavation;
   };
 
   /**
