@@ -396,7 +396,9 @@ namespace mbfem
               return h;
             }))
           continue;
-        const auto  &pair     = contact_pairs[k];
+        const auto &pair = contact_pairs[k];
+        if (pair.tied)
+          continue; // stays stuck
         const double area     = pair.area;
         const double cohesion = trial.broken[k] ? 0. : pair.cohesion;
         const double tension_limit =

@@ -156,6 +156,43 @@ namespace mbfem
     if (!parameters.contact.interfaces.empty())
       pairs = find_contact_pairs(blocks, parameters.contact, pcout);
 
+    // A pair whose two nodes are both fixed in one global direction that
+    // is oblique to the pair's frame (an inclined fault meeting a roller
+    // boundary) has fewer free relative motions than contact conditions.
+    // It is tied (ContactPair::tied), and said so.
+    {
+      unsigned int n_tied = 0;
+      for (auto &pair : pairs)
+        {
+          bool oblique_support = false;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              const auto &ca = blocks[pair.block_a]->get_physical_constraints();
+              const auto &cb = blocks[pair.block_b]->get_physical_constraints();
+              const bool  fixed =
+                ca.is_constrained(pair.dofs_a[c]) &&
+                ca.get_constraint_entries(pair.dofs_a[c])->empty() &&
+                cb.is_constrained(pair.dofs_b[c]) &&
+                cb.get_constraint_entries(pair.dofs_b[c])->empty();
+              bool aligned = false;
+              for (unsigned int i = 0; i < dim; ++i)
+                aligned |= std::abs(std::abs(pair.frame[i][c]) - 1.) < 1e-10;
+              oblique_support |= fixed && !aligned;
+            }
+          if (oblique_support)
+            {
+              ++n_tied;
+              pair.tied  = true;
+              pair.frame = unit_symmetric_tensor<dim>();
+            }
+        }
+      if (n_tied > 0)
+        pcout << "  " << n_tied
+              << " pair(s) tied: both nodes on a support fixing a direction "
+                 "oblique to the interface; they stick in the free direction "
+                 "and the support carries the rest\n";
+    }
+
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
         const auto  free_modes = blocks[b]->free_rigid_body_modes();
@@ -550,6 +587,8 @@ namespace mbfem
                max_gap = 0.;
         for (unsigned int i = 0; i < contact->pairs().size(); ++i)
           {
+            if (contact->pairs()[i].tied)
+              continue; // its frame is the global axes
             const Tensor<1, dim> rho        = contact->local_force(i);
             const double         area       = contact->pairs()[i].area;
             Tensor<1, dim>       tangential = rho;
@@ -680,7 +719,7 @@ namespace mbfem
             largest_force =
               std::max(largest_force, contact->local_force(k).norm());
         for (unsigned int k = 0; k < pairs.size(); ++k)
-          if (pairs[k].interface == i &&
+          if (pairs[k].interface == i && !pairs[k].tied &&
               contact->state(k) != ContactState::open)
             {
               const Tensor<1, dim> rho        = contact->local_force(k);

@@ -79,6 +79,15 @@ namespace mbfem
     double friction_coefficient;
     double cohesion;
     double tensile_strength;
+    /**
+     * Both nodes on a support that fixes a direction oblique to the
+     * interface (a fault meeting a roller boundary): the frame is then the
+     * global axes, the supports carry the force in the fixed direction, and
+     * the pair stays stuck in the free one. Such a pair has fewer free
+     * relative motions than contact conditions; tying it keeps the
+     * geostatic state in equilibrium.
+     */
+    bool tied = false;
   };
 
   /**

@@ -48,11 +48,11 @@ namespace mbfem
     SymmetricTensor<2, 3>
     stress_3d(const Point<dim> &point) const;
 
-    bool   enabled              = false;
-    double surface_elevation    = 0.;
-    double surcharge            = 0.;
-    double unit_weight          = 0.;
-    double lateral_coefficient  = 1.;
+    bool   enabled             = false;
+    double surface_elevation   = 0.;
+    double surcharge           = 0.;
+    double unit_weight         = 0.;
+    double lateral_coefficient = 1.;
     /**
      * Far-field boundaries held by the in-situ stress: they carry the
      * traction sigma_0 n throughout (the rock beyond the model).
