@@ -4,9 +4,10 @@ of parameters/cavern_fault.prm: first principal stress (tension positive)
 with the tensile zone outlined, displacement vectors, and the slip and gap
 along the fault.
 
-  /usr/bin/python3 scripts/plot_cavern.py RESULTS_DIR INCREMENT OUT_PREFIX
+  /usr/bin/python3 scripts/plot_cavern.py RESULTS/BASE INCREMENT OUT_PREFIX [TITLE]
 
-reads RESULTS_DIR/cavern-block0{1,2}-NNNN.vtu and cavern-pairs-NNNN.csv and
+e.g. results/cavern 10 doc/figures/cavern_elastic; reads
+RESULTS/BASE-block0{1,2}-NNNN.vtu and RESULTS/BASE-pairs-NNNN.csv and
 writes OUT_PREFIX_stress.png and OUT_PREFIX_fault.png. Needs Debian's
 python3-vtk9 and python3-matplotlib.
 """
@@ -35,6 +36,12 @@ def read_block(path):
     data = grid.GetPointData()
     s1 = vtk_to_numpy(data.GetArray("sigma_1"))
     u = vtk_to_numpy(data.GetArray("displacement"))[:, :2]
+    # DataOut writes cell data as values at the cells' points.
+    yielded_array = data.GetArray("yielded")
+    centres = []
+    if yielded_array is not None:
+        centres = list(points[vtk_to_numpy(yielded_array) > 0])
+    read_block.yielded = getattr(read_block, "yielded", []) + centres
     # Triangulate each cell's corner points (the first four of a Lagrange
     # quadrilateral) for contouring.
     triangles = []
@@ -46,8 +53,9 @@ def read_block(path):
 
 
 def main():
-    directory, increment, prefix = sys.argv[1], int(sys.argv[2]), sys.argv[3]
-    blocks = [read_block("%s/cavern-block%02d-%04d.vtu" % (directory, b, increment)) for b in (1, 2)]
+    base, increment, prefix = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+    title = sys.argv[4] if len(sys.argv) > 4 else "Faulted cavern after excavation (elastic rock)"
+    blocks = [read_block("%s-block%02d-%04d.vtu" % (base, b, increment)) for b in (1, 2)]
 
     fig, ax = plt.subplots(figsize=(8, 7.5))
     for points, s1, u, tri in blocks:
@@ -65,6 +73,10 @@ def main():
         keep = (np.abs(points[:, 0]) < 75) & (np.abs(points[:, 1]) < 75)
         sel = np.where(keep)[0][::23]
         ax.quiver(points[sel, 0], points[sel, 1], u[sel, 0], u[sel, 1], scale=0.6, width=0.002, color="k")
+    yielded = np.array(getattr(read_block, "yielded", []))
+    if len(yielded):
+        ax.plot(yielded[:, 0], yielded[:, 1], "x", color="darkgreen", ms=3,
+                label="points of yielded cells")
     ax.plot([-15, 15, 15, -15, -15], [-30, -30, 30, 30, -30], "k-", lw=1.5)
     x = np.array([-80, 80])
     ax.plot(x, -20 - (x + 15) * T, "m-", lw=1.5, label="fault")
@@ -73,13 +85,13 @@ def main():
     ax.set_aspect("equal")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m), cavern centre at 400 m depth")
-    ax.set_title("Faulted cavern after excavation (elastic rock): sigma_1 and displacement\n"
+    ax.set_title(title + ": sigma_1 and displacement\n"
                  "(arrows: 0.1 m displacement = about 17 m on the plot)", fontsize=10)
     ax.legend(loc="upper right", fontsize=8)
     fig.tight_layout()
     fig.savefig(prefix + "_stress.png", dpi=110)
 
-    with open("%s/cavern-pairs-%04d.csv" % (directory, increment)) as f:
+    with open("%s-pairs-%04d.csv" % (base, increment)) as f:
         rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
     rows = [r for r in rows if abs(abs(float(r["x"])) - 165) > 1e-6]
     rows.sort(key=lambda r: float(r["x"]))
@@ -102,7 +114,7 @@ def main():
     ax.set_xlim(-165, 165)
     ax.set_xlabel("x along the fault (m)")
     ax.set_ylabel("mm")
-    ax.set_title("Slip and gap along the fault after excavation (elastic rock)", fontsize=10)
+    ax.set_title("Slip and gap along the fault: " + title, fontsize=10)
     ax.legend(fontsize=7, ncol=1, loc="center right")
     ax.grid(alpha=0.3)
     fig.tight_layout()

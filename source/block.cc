@@ -12,6 +12,16 @@
 
 namespace mbfem
 {
+  namespace
+  {
+    /** eps : eps */
+    double
+    squared(const SymmetricTensor<2, 3> &t)
+    {
+      return t * t;
+    }
+  } // namespace
+
   void
   DiscretisationParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -130,6 +140,184 @@ namespace mbfem
   Block<dim>::get_in_situ_stress() const
   {
     return in_situ;
+  }
+
+
+
+  PlasticUpdate &
+  PlasticUpdate::operator+=(const PlasticUpdate &other)
+  {
+    change2 += other.change2;
+    norm2 += other.norm2;
+    aitken_numerator += other.aitken_numerator;
+    aitken_denominator += other.aitken_denominator;
+    n_yielded += other.n_yielded;
+    n_points += other.n_points;
+    yielded_measure += other.yielded_measure;
+    max_equivalent = std::max(max_equivalent, other.max_equivalent);
+    return *this;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::set_plasticity(const PlasticityParameters &parameters)
+  {
+    if (!parameters.enabled)
+      return;
+    mohr_coulomb = std::make_unique<MohrCoulomb>(parameters, material);
+    const std::size_t n =
+      triangulation.n_active_cells() * std::size_t(n_plastic_points());
+    plastic_strain_committed.assign(n, SymmetricTensor<2, 3>());
+    plastic_strain.assign(n, SymmetricTensor<2, 3>());
+    plastic_strain_load.assign(n, SymmetricTensor<2, 3>());
+    plastic_residual.assign(n, SymmetricTensor<2, 3>());
+    plastic_residual_previous.assign(n, SymmetricTensor<2, 3>());
+    yielded.assign(n, false);
+  }
+
+
+
+  template <int dim>
+  bool
+  Block<dim>::is_plastic() const
+  {
+    return mohr_coulomb != nullptr;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Block<dim>::n_plastic_points() const
+  {
+    return Utilities::fixed_power<dim>(fe.degree + 1);
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  Block<dim>::plastic_stress(const unsigned int cell,
+                             const unsigned int q) const
+  {
+    return mohr_coulomb->elastic_stress(
+      plastic_strain_load[cell * n_plastic_points() + q]);
+  }
+
+
+
+  template <int dim>
+  PlasticUpdate
+  Block<dim>::update_plastic_strain()
+  {
+    PlasticUpdate result;
+    if (!mohr_coulomb)
+      return result;
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            QGauss<dim>(fe.degree + 1),
+                            update_gradients | update_quadrature_points |
+                              update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> eps(fe_values.n_quadrature_points);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_symmetric_gradients(solution, eps);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const std::size_t index =
+              cell->active_cell_index() * fe_values.n_quadrature_points + q;
+            SymmetricTensor<2, 3> strain; // plane strain: eps_zz = 0
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = i; j < dim; ++j)
+                strain[i][j] = eps[q][i][j];
+            SymmetricTensor<2, 3> trial = mohr_coulomb->elastic_stress(
+              strain - plastic_strain_committed[index]);
+            if (in_situ)
+              trial += in_situ->stress_3d(fe_values.quadrature_point(q));
+            SymmetricTensor<2, 3> stress, increment;
+            yielded[index] = mohr_coulomb->return_map(trial, stress, increment);
+            const SymmetricTensor<2, 3> updated =
+              plastic_strain_committed[index] + increment;
+            const double                JxW = fe_values.JxW(q);
+            const SymmetricTensor<2, 3> residual =
+              updated - plastic_strain_load[index];
+            result.change2 += squared(residual) * JxW;
+            result.norm2 += squared(updated) * JxW;
+            if (have_previous_residual)
+              {
+                const SymmetricTensor<2, 3> &previous =
+                  plastic_residual_previous[index];
+                result.aitken_numerator +=
+                  (previous * (residual - previous)) * JxW;
+                result.aitken_denominator += squared(residual - previous) * JxW;
+              }
+            plastic_residual[index] = residual;
+            plastic_strain[index]   = updated;
+            ++result.n_points;
+            if (yielded[index])
+              {
+                ++result.n_yielded;
+                result.yielded_measure += JxW;
+              }
+            result.max_equivalent =
+              std::max(result.max_equivalent,
+                       std::sqrt(2. / 3. * squared(updated)));
+          }
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::relax_plastic_strain(const double omega)
+  {
+    for (std::size_t i = 0; i < plastic_strain_load.size(); ++i)
+      plastic_strain_load[i] += omega * plastic_residual[i];
+    plastic_residual_previous = plastic_residual;
+    have_previous_residual    = true;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::commit_plastic_strain()
+  {
+    plastic_strain_committed = plastic_strain;
+    plastic_strain_load      = plastic_strain;
+    have_previous_residual   = false;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::cell_plastic_fields(std::vector<SymmetricTensor<2, 3>> &stress,
+                                  std::vector<double> &yielded_fraction,
+                                  std::vector<double> &equivalent_strain) const
+  {
+    const unsigned int n_cells = triangulation.n_active_cells();
+    stress.assign(n_cells, SymmetricTensor<2, 3>());
+    yielded_fraction.assign(n_cells, 0.);
+    equivalent_strain.assign(n_cells, 0.);
+    if (!mohr_coulomb)
+      return;
+    const unsigned int n_q = n_plastic_points();
+    for (unsigned int c = 0; c < n_cells; ++c)
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          stress[c] += plastic_stress(c, q) / n_q;
+          yielded_fraction[c] += (yielded[c * n_q + q] ? 1. : 0.) / n_q;
+          equivalent_strain[c] =
+            std::max(equivalent_strain[c],
+                     std::sqrt(2. / 3. * squared(plastic_strain[c * n_q + q])));
+        }
   }
 
 
@@ -459,6 +647,28 @@ namespace mbfem
                     (fe_values[displacement].symmetric_gradient(i, q) *
                      sigma_0) *
                     fe_values.JxW(q);
+              }
+          }
+
+        // The plastic strain as a load, int B^T D eps_p, at the points of
+        // the plastic state.
+        if (mohr_coulomb)
+          {
+            stiffness_values.reinit(cell);
+            for (const unsigned int q :
+                 stiffness_values.quadrature_point_indices())
+              {
+                const SymmetricTensor<2, 3> s3 =
+                  plastic_stress(cell->active_cell_index(), q);
+                SymmetricTensor<2, dim> s;
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = i; j < dim; ++j)
+                    s[i][j] = s3[i][j];
+                for (unsigned int i = 0; i < n; ++i)
+                  cell_load(i) +=
+                    (stiffness_values[displacement].symmetric_gradient(i, q) *
+                     s) *
+                    stiffness_values.JxW(q);
               }
           }
 
@@ -815,8 +1025,9 @@ namespace mbfem
     AssertDimension(exact_displacement.n_components, dim);
     AssertDimension(exact_stress.n_components, dim * dim);
 
-    const QGauss<dim>                    quadrature(fe.degree + 3);
-    FEValues<dim>                        fe_values(mapping,
+    // A plastic block: at the points of its plastic state.
+    const QGauss<dim> quadrature(mohr_coulomb ? fe.degree + 1 : fe.degree + 3);
+    FEValues<dim>     fe_values(mapping,
                             fe,
                             quadrature,
                             update_values | update_gradients |
@@ -838,8 +1049,16 @@ namespace mbfem
             const Point<dim> &x = fe_values.quadrature_point(q);
             exact_displacement.vector_value(x, u_exact);
             exact_stress.vector_value(x, sigma_exact);
-            const SymmetricTensor<2, dim> sigma =
+            SymmetricTensor<2, dim> sigma =
               material.stress(eps[q]) + initial_stress(x);
+            if (mohr_coulomb)
+              {
+                const SymmetricTensor<2, 3> s =
+                  plastic_stress(cell->active_cell_index(), q);
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = i; j < dim; ++j)
+                    sigma[i][j] -= s[i][j];
+              }
             const double JxW = fe_values.JxW(q);
             for (unsigned int i = 0; i < dim; ++i)
               {
@@ -914,6 +1133,8 @@ namespace mbfem
             SymmetricTensor<2, 3> sigma = material.stress_3d<dim>(eps[q]);
             if (in_situ)
               sigma += in_situ->stress_3d(fe_values.quadrature_point(q));
+            if (mohr_coulomb)
+              sigma -= plastic_stress(cell->active_cell_index(), q);
             result = std::max(result, von_mises_stress(sigma));
           }
       }

@@ -5,8 +5,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 namespace mbfem
@@ -62,6 +64,7 @@ namespace mbfem
         extract_block(mesh, id, blocks.back()->triangulation);
         blocks.back()->set_initial_state(&parameters.in_situ_stress,
                                          &parameters.excavation);
+        blocks.back()->set_plasticity(parameters.plasticity);
         const InSituStress &in_situ = parameters.in_situ_stress;
         AssertThrow(!in_situ.enabled ||
                       std::abs(material.unit_weight - in_situ.unit_weight) <=
@@ -129,8 +132,10 @@ namespace mbfem
 
     const auto &first = *blocks.front();
     pcout << "mbfem: "
-          << (blocks.size() == 1 ? "one elastic block" :
-                                   std::to_string(blocks.size()) + " blocks")
+          << (blocks.size() == 1 ?
+                (parameters.plasticity.enabled ? "one elastic-plastic block" :
+                                                 "one elastic block") :
+                std::to_string(blocks.size()) + " blocks")
           << ", " << dim << "D" << (dim == 2 ? " plane strain" : "")
           << ", FE_Q(" << first.fe.degree << ")^" << dim << ", MappingQ("
           << first.mapping.get_degree() << ")\n";
@@ -283,58 +288,129 @@ namespace mbfem
       {
         const double time       = history.time(k);
         unsigned int iterations = 0, reference_iterations = 0;
-        {
-          TimerOutput::Scope t(timer, "load response");
-          for (const auto &block : blocks)
-            {
-              block->assemble_load(parameters.boundary_conditions, time);
-              if (condensed)
-                {
-                  Timer clock;
-                  block->solve();
-                  condensed_seconds += clock.wall_time();
-                }
-            }
-        }
-        if (contact)
+        // Plastic blocks: the increment is repeated with the plastic strain
+        // of the last pass as a load until that strain settles (the
+        // initial-stress method); elastic blocks pass once.
+        const PlasticityParameters &plasticity         = parameters.plasticity;
+        unsigned int                plastic_iterations = 0;
+        PlasticUpdate               plastic_update;
+        double                      previous_change = 0.;
+        double                      omega           = 1.;
+        for (;;)
           {
             {
-              TimerOutput::Scope t(timer, "contact iterations");
-              Timer              clock;
-              iterations           = contact->solve_increment(blocks, k);
-              last_contact_seconds = clock.wall_time();
-              (condensed ? condensed_seconds : monolithic_seconds) +=
-                last_contact_seconds;
-            }
-            if (reference)
-              {
-                TimerOutput::Scope t(timer, "monolithic reference");
-                Timer              clock;
-                reference_iterations   = reference->solve_increment(blocks, k);
-                last_reference_seconds = clock.wall_time();
-                monolithic_seconds += last_reference_seconds;
-              }
-            if (dim == 3 && contact->count(ContactState::slip) > 0)
-              pcout << "    friction against the slip made: largest angle "
-                    << std::fixed << std::setprecision(1)
-                    << contact->misalignment() << " degrees"
-                    << std::defaultfloat << std::setprecision(6) << "\n";
-            TimerOutput::Scope t(timer, "field recovery");
-            Timer              clock;
-            for (unsigned int b = 0; b < blocks.size(); ++b)
-              if (condensed)
+              TimerOutput::Scope t(timer, "load response");
+              for (const auto &block : blocks)
                 {
-                  std::vector<types::global_dof_index> dofs;
-                  std::vector<double>                  forces;
-                  contact->forces_on_block(b, dofs, forces);
-                  blocks[b]->add_point_forces(dofs, forces);
-                  blocks[b]->solve(contact->floating_amplitudes(b));
+                  block->assemble_load(parameters.boundary_conditions, time);
+                  if (condensed)
+                    {
+                      Timer clock;
+                      block->solve();
+                      condensed_seconds += clock.wall_time();
+                    }
                 }
-              else
-                contact->block_solution(b, *blocks[b], blocks[b]->solution);
-            (condensed ? condensed_seconds : monolithic_seconds) +=
-              clock.wall_time();
+            }
+            if (contact)
+              {
+                {
+                  TimerOutput::Scope t(timer, "contact iterations");
+                  Timer              clock;
+                  iterations           = contact->solve_increment(blocks, k);
+                  last_contact_seconds = clock.wall_time();
+                  (condensed ? condensed_seconds : monolithic_seconds) +=
+                    last_contact_seconds;
+                }
+                if (reference)
+                  {
+                    TimerOutput::Scope t(timer, "monolithic reference");
+                    Timer              clock;
+                    reference_iterations =
+                      reference->solve_increment(blocks, k);
+                    last_reference_seconds = clock.wall_time();
+                    monolithic_seconds += last_reference_seconds;
+                  }
+                if (dim == 3 && contact->count(ContactState::slip) > 0)
+                  pcout << "    friction against the slip made: largest angle "
+                        << std::fixed << std::setprecision(1)
+                        << contact->misalignment() << " degrees"
+                        << std::defaultfloat << std::setprecision(6) << "\n";
+                TimerOutput::Scope t(timer, "field recovery");
+                Timer              clock;
+                for (unsigned int b = 0; b < blocks.size(); ++b)
+                  if (condensed)
+                    {
+                      std::vector<types::global_dof_index> dofs;
+                      std::vector<double>                  forces;
+                      contact->forces_on_block(b, dofs, forces);
+                      blocks[b]->add_point_forces(dofs, forces);
+                      blocks[b]->solve(contact->floating_amplitudes(b));
+                    }
+                  else
+                    contact->block_solution(b, *blocks[b], blocks[b]->solution);
+                (condensed ? condensed_seconds : monolithic_seconds) +=
+                  clock.wall_time();
+              }
+
+            if (!plasticity.enabled)
+              break;
+            ++plastic_iterations;
+            plastic_update = PlasticUpdate();
+            {
+              TimerOutput::Scope t(timer, "plasticity");
+              for (const auto &block : blocks)
+                plastic_update += block->update_plastic_strain();
+            }
+            const double change = std::sqrt(
+              plastic_update.change2 / std::max(plastic_update.norm2, 1e-300));
+            // The initial-stress iteration converges linearly, at a rate
+            // that nears 1 as the plastic zone grows: what is left to go is
+            // about change * rate / (1 - rate), not the change itself.
+            const double rate =
+              (previous_change > 0. ? change / previous_change : 0.);
+            previous_change = change;
+            // Progress on long runs: a line every 100 iterations.
+            if (plastic_iterations % 100 == 0 && !parameters.run.test_mode)
+              pcout << "    plastic iteration " << plastic_iterations
+                    << ": change " << std::scientific << std::setprecision(3)
+                    << change << ", relaxation " << std::defaultfloat << omega
+                    << ", " << plastic_update.n_yielded << " points yielded"
+                    << std::setprecision(6) << "\n";
+            const double remaining =
+              (rate < 1. ? change * std::max(rate / (1. - rate), 1.) :
+                           change * 1e3);
+            if (plastic_update.change2 == 0. ||
+                remaining < plasticity.tolerance)
+              break;
+            AssertThrow(
+              plastic_iterations < plasticity.max_iterations,
+              ExcMessage(
+                "Increment " + std::to_string(k) + " (t = " +
+                std::to_string(time) + "): the plastic strain still changes " +
+                "by " + std::to_string(change) + " (relative) after " +
+                std::to_string(plastic_iterations) +
+                " iterations ('Plasticity/Maximum iterations'). The rock may "
+                "be failing (no equilibrium with this strength), or the "
+                "increment is too large: use more load increments. Results "
+                "of the earlier increments are in " +
+                parameters.output.directory + "."));
+
+            // Aitken's relaxation of the fixed point x = F(x): omega from
+            // the last two residuals (plain steps converge at a rate near 1
+            // once the plastic zone is large, e.g. with dilatancy).
+            omega =
+              (plastic_iterations == 1 ||
+                   plastic_update.aitken_denominator <= 0. ?
+                 1. :
+                 std::min(20.,
+                          std::max(0.05,
+                                   -omega * plastic_update.aitken_numerator /
+                                     plastic_update.aitken_denominator)));
+            for (const auto &block : blocks)
+              block->relax_plastic_strain(omega);
           }
+        for (const auto &block : blocks)
+          block->commit_plastic_strain();
         for (const auto &block : blocks)
           AssertThrow(std::isfinite(block->solution.l2_norm()),
                       ExcMessage(
@@ -347,6 +423,15 @@ namespace mbfem
                         parameters.output.directory + "."));
 
         print_increment(k, time, iterations);
+        if (plasticity.enabled)
+          pcout << "    plasticity: " << plastic_iterations
+                << " iteration(s), yielded " << plastic_update.n_yielded
+                << " of " << plastic_update.n_points << " quadrature points ("
+                << (dim == 2 ? "area " : "volume ") << std::scientific
+                << std::setprecision(6) << plastic_update.yielded_measure
+                << "), largest equivalent plastic strain "
+                << plastic_update.max_equivalent << std::defaultfloat
+                << std::setprecision(6) << "\n";
         if (reference)
           compare_formulations(k);
         std::string pair_file;

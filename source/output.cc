@@ -53,10 +53,13 @@ namespace mbfem
 
 
   template <int dim>
-  StressPostprocessor<dim>::StressPostprocessor(const Material     &material,
-                                                const InSituStress *in_situ)
+  StressPostprocessor<dim>::StressPostprocessor(
+    const Material                           &material,
+    const InSituStress                       *in_situ,
+    const std::vector<SymmetricTensor<2, 3>> &plastic_stress)
     : material(material)
     , in_situ(in_situ != nullptr && in_situ->enabled ? in_situ : nullptr)
+    , plastic_stress(plastic_stress)
   {}
 
 
@@ -75,6 +78,9 @@ namespace mbfem
         SymmetricTensor<2, 3> sigma = material.stress_3d<dim>(symmetrize(grad));
         if (in_situ)
           sigma += in_situ->stress_3d(inputs.evaluation_points[p]);
+        if (!plastic_stress.empty())
+          sigma -= plastic_stress[inputs.template get_cell<dim>()
+                                    ->active_cell_index()];
 
         unsigned int k = 0;
         for (unsigned int i = 0; i < dim; ++i)
@@ -156,9 +162,24 @@ namespace mbfem
                              names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
+    std::vector<SymmetricTensor<2, 3>> plastic_stress;
+    std::vector<double>                yielded, plastic_strain;
+    block.cell_plastic_fields(plastic_stress, yielded, plastic_strain);
+    if (!block.is_plastic())
+      plastic_stress.clear();
     const StressPostprocessor<dim> stress(block.material,
-                                          block.get_in_situ_stress());
+                                          block.get_in_situ_stress(),
+                                          plastic_stress);
     data_out.add_data_vector(block.solution, stress);
+    Vector<float> yielded_cells(yielded.begin(), yielded.end());
+    Vector<float> plastic_cells(plastic_strain.begin(), plastic_strain.end());
+    if (block.is_plastic())
+      {
+        // Fraction of each cell's quadrature points on the yield surface,
+        // and the largest equivalent plastic strain sqrt(2/3 eps_p:eps_p).
+        data_out.add_data_vector(yielded_cells, "yielded");
+        data_out.add_data_vector(plastic_cells, "plastic_strain");
+      }
 
     Vector<float> block_id(block.triangulation.n_active_cells());
     block_id = static_cast<float>(block_index);

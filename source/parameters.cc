@@ -56,6 +56,7 @@ namespace mbfem
     ContactParameters::declare_parameters(prm);
     InSituStress::declare_parameters(prm);
     Excavation::declare_parameters(prm);
+    PlasticityParameters::declare_parameters(prm);
   }
 
 
@@ -79,6 +80,7 @@ namespace mbfem
     contact.parse_parameters(prm);
     in_situ_stress.parse_parameters(prm);
     excavation.parse_parameters(prm);
+    plasticity.parse_parameters(prm);
     AssertThrow(excavation.excavated_ids.empty() &&
                     excavation.released_boundaries.empty() ||
                   in_situ_stress.enabled,

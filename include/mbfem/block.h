@@ -5,6 +5,7 @@
 #include <mbfem/direct_solver.h>
 #include <mbfem/in_situ_stress.h>
 #include <mbfem/material.h>
+#include <mbfem/plasticity.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
@@ -38,6 +39,30 @@ namespace mbfem
 
     unsigned int degree         = 2;
     unsigned int mapping_degree = 2;
+  };
+
+  /** What one plastic update of a block found. */
+  struct PlasticUpdate
+  {
+    /**
+     * Squared L2 norms of the residual r = F(x) - x of the fixed-point map
+     * (x the plastic strain in the load, F(x) the one the return mapping
+     * gives back) and of F(x).
+     */
+    double change2 = 0.;
+    double norm2   = 0.;
+    /** r_prev . (r - r_prev) and |r - r_prev|^2, for Aitken's relaxation. */
+    double       aitken_numerator   = 0.;
+    double       aitken_denominator = 0.;
+    unsigned int n_yielded          = 0;
+    unsigned int n_points           = 0;
+    /** Area (2D) or volume (3D) of the yielded quadrature points. */
+    double yielded_measure = 0.;
+    /** Largest sqrt(2/3 eps_p : eps_p). */
+    double max_equivalent = 0.;
+
+    PlasticUpdate &
+    operator+=(const PlasticUpdate &other);
   };
 
   /** L2 errors against a closed-form solution, absolute and relative. */
@@ -96,6 +121,45 @@ namespace mbfem
     /** The in-situ stress, or nullptr. */
     const InSituStress *
     get_in_situ_stress() const;
+
+    /**
+     * Makes the block elastic-perfectly plastic (Mohr-Coulomb) if
+     * @p parameters are enabled; after the triangulation is filled.
+     */
+    void
+    set_plasticity(const PlasticityParameters &parameters);
+
+    bool
+    is_plastic() const;
+
+    /**
+     * The return mapping at every quadrature point, from the current
+     * solution and the plastic strain of the last converged increment; the
+     * result becomes the plastic strain that the next assemble_load() puts
+     * into the load (int B^T D eps_p).
+     */
+    PlasticUpdate
+    update_plastic_strain();
+
+    /**
+     * Moves the plastic strain in the load by @p omega times the residual
+     * of the last update_plastic_strain() (omega = 1: plain fixed point).
+     */
+    void
+    relax_plastic_strain(const double omega);
+
+    /** Accepts the plastic strain of the converged increment. */
+    void
+    commit_plastic_strain();
+
+    /**
+     * Per active cell: the mean of D eps_p over its quadrature points (for
+     * the stresses at output points) and the fraction of them yielded.
+     */
+    void
+    cell_plastic_fields(std::vector<SymmetricTensor<2, 3>> &plastic_stress,
+                        std::vector<double>                &yielded,
+                        std::vector<double> &equivalent_strain) const;
 
     void
     assemble_stiffness();
@@ -262,6 +326,22 @@ namespace mbfem
     SymmetricTensor<2, dim>
     initial_stress(const Point<dim> &point) const;
 
+    /** The quadrature of the plastic state: QGauss(p + 1). */
+    unsigned int
+    n_plastic_points() const;
+
+    /** D eps_p (3x3) at quadrature point @p q of cell @p cell. */
+    SymmetricTensor<2, 3>
+    plastic_stress(const unsigned int cell, const unsigned int q) const;
+
+    std::unique_ptr<MohrCoulomb>         mohr_coulomb;
+    std::vector<SymmetricTensor<2, 3>>   plastic_strain_committed;
+    std::vector<SymmetricTensor<2, 3>>   plastic_strain;      // F(x)
+    std::vector<SymmetricTensor<2, 3>>   plastic_strain_load; // x
+    std::vector<SymmetricTensor<2, 3>>   plastic_residual;
+    std::vector<SymmetricTensor<2, 3>>   plastic_residual_previous;
+    bool                                 have_previous_residual = false;
+    std::vector<bool>                    yielded;
     const InSituStress                  *in_situ    = nullptr;
     const Excavation                    *excavation = nullptr;
     AffineConstraints<double>            physical_constraints;

@@ -42,8 +42,14 @@ namespace mbfem
   class StressPostprocessor : public DataPostprocessor<dim>
   {
   public:
-    explicit StressPostprocessor(const Material     &material,
-                                 const InSituStress *in_situ = nullptr);
+    /**
+     * @p plastic_stress: per active cell, D eps_p (its mean over the cell),
+     * subtracted from the elastic stress; empty for an elastic block.
+     */
+    explicit StressPostprocessor(
+      const Material                           &material,
+      const InSituStress                       *in_situ        = nullptr,
+      const std::vector<SymmetricTensor<2, 3>> &plastic_stress = {});
 
     void
     evaluate_vector_field(
@@ -60,8 +66,9 @@ namespace mbfem
     get_needed_update_flags() const override;
 
   private:
-    const Material      material;
-    const InSituStress *in_situ;
+    const Material                     material;
+    const InSituStress                *in_situ;
+    std::vector<SymmetricTensor<2, 3>> plastic_stress;
   };
 
   /**

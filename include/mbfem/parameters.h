@@ -12,6 +12,7 @@
 #include <mbfem/mesh.h>
 #include <mbfem/order_study.h>
 #include <mbfem/output.h>
+#include <mbfem/plasticity.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -66,6 +67,7 @@ namespace mbfem
     ContactParameters                      contact;
     InSituStress                           in_situ_stress;
     Excavation                             excavation;
+    PlasticityParameters                   plasticity;
   };
 
   /**

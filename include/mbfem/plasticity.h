@@ -1,0 +1,84 @@
+#ifndef mbfem_plasticity_h
+#define mbfem_plasticity_h
+
+#include <mbfem/material.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /**
+   * Subsection "Plasticity": elastic-perfectly plastic Mohr-Coulomb rock in
+   * every block, solved by the constant-stiffness initial-stress method:
+   * each block keeps its elastic stiffness (so its factorisation and its
+   * contact flexibility stay valid), the plastic strain enters the load as
+   * int B^T D eps_p, and every load increment is repeated (with its
+   * contact iteration) until the plastic strain stops changing.
+   */
+  struct PlasticityParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    bool         enabled         = false;
+    double       cohesion        = 0.;
+    double       friction_angle  = 30.; // degrees
+    double       dilatancy_angle = 0.;  // degrees
+    double       tolerance       = 1e-6;
+    unsigned int max_iterations  = 1000;
+  };
+
+
+
+  /**
+   * Mohr-Coulomb yield, f = k sigma_1 - sigma_3 - sigma_c <= 0 with
+   * sigma_1 >= sigma_2 >= sigma_3 (tension positive), k = (1 + sin phi) /
+   * (1 - sin phi), sigma_c = 2 c cos phi / (1 - sin phi), and the plastic
+   * potential of the dilatancy angle psi. The return mapping works in
+   * principal stresses (isotropic elasticity keeps the principal axes): to
+   * the plane, to one of the two edges (sigma_1 = sigma_2 or sigma_2 =
+   * sigma_3), or to the apex, whichever the trial stress lies behind
+   * (Clausen, Damkilde and Andersen, Computers & Structures 2006).
+   */
+  class MohrCoulomb
+  {
+  public:
+    MohrCoulomb(const PlasticityParameters &parameters,
+                const Material             &material);
+
+    /** f of @p stress; > 0 outside the yield surface. */
+    double
+    yield_function(const SymmetricTensor<2, 3> &stress) const;
+
+    /**
+     * Returns @p trial to the yield surface: @p stress the admissible
+     * stress, @p plastic_strain the plastic strain increment D^{-1}
+     * (trial - stress). Returns false (and stress = trial) if the trial is
+     * elastic.
+     */
+    bool
+    return_map(const SymmetricTensor<2, 3> &trial,
+               SymmetricTensor<2, 3>       &stress,
+               SymmetricTensor<2, 3>       &plastic_strain) const;
+
+    /** D eps for a 3x3 strain. */
+    SymmetricTensor<2, 3>
+    elastic_stress(const SymmetricTensor<2, 3> &strain) const;
+
+    /** D^{-1} sigma for a 3x3 stress. */
+    SymmetricTensor<2, 3>
+    elastic_strain(const SymmetricTensor<2, 3> &stress) const;
+
+  private:
+    double lambda, mu, youngs_modulus, poissons_ratio;
+    double k, m, sigma_c;
+  };
+} // namespace mbfem
+
+#endif
