@@ -5,7 +5,7 @@ set -euo pipefail
 
 source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$source_dir"
-files=$(git ls-files '*.cc' '*.h' 2>/dev/null || find source include tests -name '*.cc' -o -name '*.h')
+files=$(git ls-files --cached --others --exclude-standard '*.cc' '*.h' 2>/dev/null || find source include tests -name '*.cc' -o -name '*.h')
 
 if [ "${1:-}" = "--check" ]; then
   bad=""

@@ -492,26 +492,36 @@ namespace mbfem
 
 
   template <int dim>
+  template <typename MatrixType>
   void
-  Block<dim>::assemble_stiffness()
+  Block<dim>::assemble_matrix(const AffineConstraints<double> &constraints,
+                              MatrixType                      &matrix) const
   {
-    stiffness = 0.;
     FEValues<dim>      fe_values(mapping,
                             fe,
                             QGauss<dim>(fe.degree + 1),
                             update_gradients | update_JxW_values);
-    FullMatrix<double> matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
+    FullMatrix<double> cell(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &c : dof_handler.active_cell_iterators())
       {
-        fe_values.reinit(cell);
-        cell_matrix(fe_values, matrix);
-        cell->get_dof_indices(dof_indices);
-        // The matrix alone: its constrained rows and columns do not depend
-        // on the prescribed values, so one factorisation serves all times.
-        constraints.distribute_local_to_global(matrix, dof_indices, stiffness);
+        fe_values.reinit(c);
+        cell_matrix(fe_values, cell);
+        c->get_dof_indices(dof_indices);
+        constraints.distribute_local_to_global(cell, dof_indices, matrix);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::assemble_stiffness()
+  {
+    // The matrix alone: its constrained rows and columns do not depend on
+    // the prescribed values, so one factorisation serves all times.
+    stiffness = 0.;
+    assemble_matrix(constraints, stiffness);
     stiffness.compress(VectorOperation::add);
   }
 
@@ -529,22 +539,7 @@ namespace mbfem
                                     false);
     pattern.copy_from(dsp);
     matrix.reinit(pattern);
-
-    FEValues<dim>      fe_values(mapping,
-                            fe,
-                            QGauss<dim>(fe.degree + 1),
-                            update_gradients | update_JxW_values);
-    FullMatrix<double> cell(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    for (const auto &c : dof_handler.active_cell_iterators())
-      {
-        fe_values.reinit(c);
-        cell_matrix(fe_values, cell);
-        c->get_dof_indices(dof_indices);
-        physical_constraints.distribute_local_to_global(cell,
-                                                        dof_indices,
-                                                        matrix);
-      }
+    assemble_matrix(physical_constraints, matrix);
   }
 
 

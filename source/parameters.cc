@@ -81,9 +81,9 @@ namespace mbfem
     in_situ_stress.parse_parameters(prm);
     excavation.parse_parameters(prm);
     plasticity.parse_parameters(prm);
-    AssertThrow(excavation.excavated_ids.empty() &&
-                    excavation.released_boundaries.empty() ||
-                  in_situ_stress.enabled,
+    const bool excavates = !excavation.excavated_ids.empty() ||
+                           !excavation.released_boundaries.empty();
+    AssertThrow(!excavates || in_situ_stress.enabled,
                 ExcMessage("Excavation: an excavation releases the in-situ "
                            "stress, so it needs 'In-situ stress/Enabled = "
                            "true'."));

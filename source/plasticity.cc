@@ -126,7 +126,7 @@ namespace mbfem
                           SymmetricTensor<2, 3>       &stress,
                           SymmetricTensor<2, 3>       &plastic_strain) const
   {
-    const auto   eigen = eigenvectors(trial); // descending
+    const auto   eigen   = eigenvectors(trial); // descending
     const double s_tr[3] = {eigen[0].first, eigen[1].first, eigen[2].first};
     const double f       = k * s_tr[0] - s_tr[2] - sigma_c;
     stress               = trial;
@@ -158,17 +158,16 @@ namespace mbfem
       s[i] = s_tr[i] - f / aDb * Db[i];
 
     const double tolerance = 1e-12 * (std::abs(s_tr[0]) + std::abs(s_tr[2]));
-    const bool   ordered =
-      s[0] >= s[1] - tolerance && s[1] >= s[2] - tolerance;
+    const bool   ordered = s[0] >= s[1] - tolerance && s[1] >= s[2] - tolerance;
     if (!ordered)
       {
         // An edge: sigma = apex + t r_f, with the plastic strain in the span
         // of the two planes' flow directions, i.e. D^{-1} (trial - sigma)
         // orthogonal to r_g.
-        const double apex = sigma_c / (k - 1.);
-        const bool   first_edge = s[0] < s[1]; // sigma_1 = sigma_2
-        const double r_f[3] = {1., first_edge ? 1. : k, k};
-        const double r_g[3] = {1., first_edge ? 1. : m, m};
+        const double apex                = sigma_c / (k - 1.);
+        const bool   first_edge          = s[0] < s[1]; // sigma_1 = sigma_2
+        const double r_f[3]              = {1., first_edge ? 1. : k, k};
+        const double r_g[3]              = {1., first_edge ? 1. : m, m};
         const std::array<double, 3> Cr_g = apply(C, r_g);
         double                      numerator = 0., denominator = 0.;
         for (unsigned int i = 0; i < 3; ++i)

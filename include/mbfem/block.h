@@ -306,6 +306,12 @@ namespace mbfem
     cell_matrix(const FEValues<dim> &fe_values,
                 FullMatrix<double>  &matrix) const;
 
+    /** Adds the stiffness, through @p constraints, to @p matrix. */
+    template <typename MatrixType>
+    void
+    assemble_matrix(const AffineConstraints<double> &constraints,
+                    MatrixType                      &matrix) const;
+
     /**
      * Physical constraints (hanging nodes, prescribed displacements with
      * their values at the functions' current time, point supports, platens)
