@@ -399,7 +399,7 @@ namespace mbfem
             // the last two residuals (plain steps converge at a rate near 1
             // once the plastic zone is large, e.g. with dilatancy).
             omega =
-              (plastic_iterations == 1 ||
+              (!plasticity.aitken || plastic_iterations == 1 ||
                    plastic_update.aitken_denominator <= 0. ?
                  1. :
                  std::min(20.,

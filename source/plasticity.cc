@@ -43,6 +43,13 @@ namespace mbfem
         "be within this (relative, L2 over the blocks) of its limit: the "
         "change of the last iteration times r / (1 - r), r the observed "
         "rate of the (linear) convergence, at least the change itself.");
+      prm.declare_entry("Relaxation",
+                        "aitken",
+                        Patterns::Selection("aitken|none"),
+                        "aitken: each step of the fixed-point iteration is "
+                        "scaled by Aitken's factor from the last two "
+                        "residuals (bounded to [0.05, 20]); none: plain "
+                        "steps, slower but monotone.");
       prm.declare_entry("Maximum iterations",
                         "1000",
                         Patterns::Integer(1),
@@ -65,6 +72,7 @@ namespace mbfem
       dilatancy_angle = prm.get_double("Dilatancy angle");
       tolerance       = prm.get_double("Tolerance");
       max_iterations  = prm.get_integer("Maximum iterations");
+      aitken          = prm.get("Relaxation") == "aitken";
       AssertThrow(!enabled || friction_angle > 0.,
                   ExcMessage("Plasticity/Friction angle must be > 0 (a "
                              "Tresca rock is not supported)."));

@@ -32,6 +32,8 @@ namespace mbfem
     double       dilatancy_angle = 0.;  // degrees
     double       tolerance       = 1e-6;
     unsigned int max_iterations  = 1000;
+    /** Aitken's relaxation of the fixed-point iteration (else plain). */
+    bool aitken = true;
   };
 
 
