@@ -456,6 +456,41 @@ namespace mbfem
               << ", c = " << declaration.cohesion
               << ", sigma_t = " << declaration.tensile_strength << "\n";
       }
+
+    // A pair whose two nodes are both fixed in one global direction that
+    // is oblique to the pair's frame (an inclined fault meeting a roller
+    // boundary) has fewer free relative motions than contact conditions.
+    // It is tied (ContactPair::tied), and said so.
+    unsigned int n_tied = 0;
+    for (auto &pair : pairs)
+      {
+        const auto &ca = blocks[pair.block_a]->get_physical_constraints();
+        const auto &cb = blocks[pair.block_b]->get_physical_constraints();
+        bool        oblique_support = false;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const bool fixed =
+              ca.is_constrained(pair.dofs_a[c]) &&
+              ca.get_constraint_entries(pair.dofs_a[c])->empty() &&
+              cb.is_constrained(pair.dofs_b[c]) &&
+              cb.get_constraint_entries(pair.dofs_b[c])->empty();
+            bool aligned = false;
+            for (unsigned int i = 0; i < dim; ++i)
+              aligned |= std::abs(std::abs(pair.frame[i][c]) - 1.) < 1e-10;
+            oblique_support |= fixed && !aligned;
+          }
+        if (oblique_support)
+          {
+            ++n_tied;
+            pair.tied  = true;
+            pair.frame = unit_symmetric_tensor<dim>();
+          }
+      }
+    if (n_tied > 0)
+      pcout << "  " << n_tied
+            << " pair(s) tied: both nodes on a support fixing a direction "
+               "oblique to the interface; they stick in the free direction "
+               "and the support carries the rest\n";
     return pairs;
   }
 

@@ -94,7 +94,7 @@ namespace mbfem
       }
 
     // Global components first: C_a and P.
-    FullMatrix<double> c_global(n_r, n_r);
+    FullMatrix<double> c_global(condensed ? n_r : 0, condensed ? n_r : 0);
     FullMatrix<double> p_global(n_r, n_alpha_total);
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
@@ -125,8 +125,8 @@ namespace mbfem
           {
             const auto &dofs_k =
               (sign_k < 0 ? contact_pairs[k].dofs_a : contact_pairs[k].dofs_b);
-            for (const auto &[l, sign_l] : sides)
-              if (condensed)
+            if (condensed)
+              for (const auto &[l, sign_l] : sides)
                 {
                   const auto &dofs_l = (sign_l < 0 ? contact_pairs[l].dofs_a :
                                                      contact_pairs[l].dofs_b);

@@ -10,27 +10,11 @@ namespace mbfem
 {
   namespace
   {
-    /** "3, 5" -> {3, 5}; names the entry in the message. */
-    std::vector<unsigned int>
-    parse_ids(const std::string &text, const std::string &entry)
+    /** "3, 5" -> {3, 5}; the entry's pattern has checked the text. */
+    std::vector<int>
+    parse_ids(const std::string &text)
     {
-      std::vector<unsigned int> ids;
-      for (const auto &item : Utilities::split_string_list(text, ','))
-        {
-          try
-            {
-              const int id = Utilities::string_to_int(item);
-              AssertThrow(id >= 0, ExcMessage(""));
-              ids.push_back(id);
-            }
-          catch (...)
-            {
-              AssertThrow(false,
-                          ExcMessage(entry + ": '" + item +
-                                     "' is not a non-negative integer."));
-            }
-        }
-      return ids;
+      return Utilities::string_to_int(Utilities::split_string_list(text));
     }
   } // namespace
 
@@ -76,7 +60,7 @@ namespace mbfem
       prm.declare_entry(
         "Stress boundary ids",
         "",
-        Patterns::Anything(),
+        Patterns::List(Patterns::Integer(0)),
         "Comma-separated boundary ids of the far field that the in-situ "
         "stress holds: they carry the traction sigma_0 n throughout. "
         "Boundaries with prescribed displacements need not be listed (the "
@@ -98,8 +82,7 @@ namespace mbfem
       unit_weight         = prm.get_double("Unit weight");
       lateral_coefficient = prm.get_double("Lateral pressure coefficient");
       stress_boundaries.clear();
-      for (const auto id : parse_ids(prm.get("Stress boundary ids"),
-                                     "In-situ stress/Stress boundary ids"))
+      for (const auto id : parse_ids(prm.get("Stress boundary ids")))
         stress_boundaries.insert(id);
     }
     prm.leave_subsection();
@@ -146,14 +129,14 @@ namespace mbfem
       prm.declare_entry(
         "Excavated material ids",
         "",
-        Patterns::Anything(),
+        Patterns::List(Patterns::Integer(0)),
         "Comma-separated material ids of the cells excavated (the cavern). "
         "They are not blocks; the faces where they met the rock are released "
         "(see below). Needs 'In-situ stress/Enabled'.");
       prm.declare_entry(
         "Released boundary ids",
         "",
-        Patterns::Anything(),
+        Patterns::List(Patterns::Integer(0)),
         "Further boundary ids released in the same way, for a mesh that "
         "leaves the excavated region out. A released face carries (1 - "
         "lambda) sigma_0 n, lambda = t clipped to [0, 1]: the support of the "
@@ -171,14 +154,12 @@ namespace mbfem
     {
       excavated_ids.clear();
       released_boundaries.clear();
-      for (const auto id : parse_ids(prm.get("Excavated material ids"),
-                                     "Excavation/Excavated material ids"))
+      for (const auto id : parse_ids(prm.get("Excavated material ids")))
         {
           excavated_ids.push_back(id);
           released_boundaries.insert(interface_boundary_id(id));
         }
-      for (const auto id : parse_ids(prm.get("Released boundary ids"),
-                                     "Excavation/Released boundary ids"))
+      for (const auto id : parse_ids(prm.get("Released boundary ids")))
         released_boundaries.insert(id);
     }
     prm.leave_subsection();

@@ -3,6 +3,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace mbfem
@@ -23,29 +24,26 @@ namespace mbfem
     pairs = contact_pairs;
     offset.assign(blocks.size(), 0);
     n_displacements = 0;
-    patterns.clear();
-    stiffness.clear();
-    double       trace  = 0.;
-    unsigned int n_free = 0;
+    std::vector<SparsityPattern>      patterns(blocks.size());
+    std::vector<SparseMatrix<double>> stiffness(blocks.size());
+    double                            trace  = 0.;
+    unsigned int                      n_free = 0;
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
         offset[b] = n_displacements;
         n_displacements += blocks[b]->n_dofs();
-        patterns.push_back(std::make_unique<SparsityPattern>());
-        stiffness.push_back(std::make_unique<SparseMatrix<double>>());
-        blocks[b]->assemble_unpinned_stiffness(*patterns.back(),
-                                               *stiffness.back());
+        blocks[b]->assemble_unpinned_stiffness(patterns[b], stiffness[b]);
         const auto &constraints = blocks[b]->get_physical_constraints();
         for (types::global_dof_index i = 0; i < blocks[b]->n_dofs(); ++i)
           if (!constraints.is_constrained(i))
             {
-              trace += stiffness.back()->diag_element(i);
+              trace += stiffness[b].diag_element(i);
               ++n_free;
             }
       }
     stiffness_scale = (n_free > 0 && trace > 0. ? trace / n_free : 1.);
 
-    make_relative_displacements(blocks);
+    make_relative_displacements(blocks, true);
 
     // The pattern: the blocks' stiffnesses on the diagonal; each pair's
     // dim rows couple to every displacement its d depends on and to its own
@@ -53,7 +51,7 @@ namespace mbfem
     const types::global_dof_index n_rows = size();
     DynamicSparsityPattern        dsp(n_rows);
     for (unsigned int b = 0; b < blocks.size(); ++b)
-      for (auto entry = patterns[b]->begin(); entry != patterns[b]->end();
+      for (auto entry = patterns[b].begin(); entry != patterns[b].end();
            ++entry)
         dsp.add(offset[b] + entry->row(), offset[b] + entry->column());
     for (unsigned int k = 0; k < pairs.size(); ++k)
@@ -77,6 +75,34 @@ namespace mbfem
                   complete_index_set(n_rows),
                   dsp,
                   MPI_COMM_SELF);
+
+    // What does not change with the states: K, and -G^T in the
+    // displacement rows (K u - G^T rho = f, rho = ks y). solve() rewrites
+    // only the pairs' rows.
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      for (types::global_dof_index i = 0; i < stiffness[b].m(); ++i)
+        {
+          columns.clear();
+          values.clear();
+          for (auto entry = stiffness[b].begin(i); entry != stiffness[b].end(i);
+               ++entry)
+            {
+              columns.push_back(offset[b] + entry->column());
+              values.push_back(entry->value());
+            }
+          matrix.add(offset[b] + i,
+                     columns.size(),
+                     columns.data(),
+                     values.data());
+        }
+    for (unsigned int r = 0; r < terms.size(); ++r)
+      for (const auto &term : terms[r])
+        matrix.add(term.column,
+                   n_displacements + r,
+                   -stiffness_scale * term.coefficient);
+    matrix.compress(VectorOperation::add);
     load.reinit(n_displacements);
   }
 
@@ -85,9 +111,11 @@ namespace mbfem
   template <int dim>
   void
   MonolithicSystem<dim>::make_relative_displacements(
-    const std::vector<std::unique_ptr<Block<dim>>> &blocks)
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+    const bool                                      with_terms)
   {
-    terms.assign(pairs.size() * dim, {});
+    if (with_terms)
+      terms.assign(pairs.size() * dim, {});
     constant.assign(pairs.size() * dim, 0.);
     for (unsigned int k = 0; k < pairs.size(); ++k)
       {
@@ -115,15 +143,16 @@ namespace mbfem
                     const double weight = sign * pair.frame[i][c];
                     if (weight == 0.)
                       continue;
-                    for (const auto &[j, c_ij] : u_i)
-                      terms[k * dim + i].push_back(
-                        {offset[b] + j, weight * c_ij});
+                    if (with_terms)
+                      for (const auto &[j, c_ij] : u_i)
+                        terms[k * dim + i].push_back(
+                          {offset[b] + j, weight * c_ij});
                     constant[k * dim + i] += weight * u_0;
                   }
               }
           }
         // Merge repeated columns (both nodes tied to one platen master).
-        for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int i = 0; i < dim && with_terms; ++i)
           {
             std::map<types::global_dof_index, double> merged;
             for (const auto &term : terms[k * dim + i])
@@ -149,8 +178,9 @@ namespace mbfem
         for (types::global_dof_index i = 0; i < f.size(); ++i)
           load(offset[b] + i) = f(i);
       }
-    // Prescribed values change with time, and with them the constants g.
-    make_relative_displacements(blocks);
+    // Prescribed values change with time, and with them the constants g;
+    // the terms follow the constraints' structure, which does not.
+    make_relative_displacements(blocks, false);
   }
 
 
@@ -184,36 +214,20 @@ namespace mbfem
     const double                  ks     = stiffness_scale;
     Vector<double>                rhs(n_rows);
 
-    matrix = 0.;
-    std::vector<types::global_dof_index> columns;
-    std::vector<double>                  values;
-    for (unsigned int b = 0; b < stiffness.size(); ++b)
-      for (types::global_dof_index i = 0; i < stiffness[b]->m(); ++i)
-        {
-          columns.clear();
-          values.clear();
-          for (auto entry = stiffness[b]->begin(i);
-               entry != stiffness[b]->end(i);
-               ++entry)
-            {
-              columns.push_back(offset[b] + entry->column());
-              values.push_back(entry->value());
-            }
-          matrix.add(offset[b] + i,
-                     columns.size(),
-                     columns.data(),
-                     values.data());
-          rhs(offset[b] + i) = load(offset[b] + i);
-        }
+    // The pairs' rows are those of this trial's states; the rest was
+    // assembled in setup().
+    std::vector<types::global_dof_index> pair_rows(equations.size());
+    for (unsigned int r = 0; r < equations.size(); ++r)
+      pair_rows[r] = n_displacements + r;
+    matrix.clear_rows(pair_rows);
+    for (types::global_dof_index i = 0; i < n_displacements; ++i)
+      rhs(i) = load(i);
 
     for (unsigned int r = 0; r < equations.size(); ++r)
       {
         const unsigned int            k   = r / dim;
         const types::global_dof_index row = n_displacements + r;
         const PairEquation<dim>      &eq  = equations[r];
-        // K u - G^T rho = f, with rho = ks y.
-        for (const auto &term : terms[r])
-          matrix.add(term.column, row, -ks * term.coefficient);
 
         // force . rho + displacement . (G u + g) = value; a row without
         // force terms is multiplied by ks to match the stiffness rows.

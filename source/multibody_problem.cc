@@ -161,43 +161,6 @@ namespace mbfem
     if (!parameters.contact.interfaces.empty())
       pairs = find_contact_pairs(blocks, parameters.contact, pcout);
 
-    // A pair whose two nodes are both fixed in one global direction that
-    // is oblique to the pair's frame (an inclined fault meeting a roller
-    // boundary) has fewer free relative motions than contact conditions.
-    // It is tied (ContactPair::tied), and said so.
-    {
-      unsigned int n_tied = 0;
-      for (auto &pair : pairs)
-        {
-          bool oblique_support = false;
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              const auto &ca = blocks[pair.block_a]->get_physical_constraints();
-              const auto &cb = blocks[pair.block_b]->get_physical_constraints();
-              const bool  fixed =
-                ca.is_constrained(pair.dofs_a[c]) &&
-                ca.get_constraint_entries(pair.dofs_a[c])->empty() &&
-                cb.is_constrained(pair.dofs_b[c]) &&
-                cb.get_constraint_entries(pair.dofs_b[c])->empty();
-              bool aligned = false;
-              for (unsigned int i = 0; i < dim; ++i)
-                aligned |= std::abs(std::abs(pair.frame[i][c]) - 1.) < 1e-10;
-              oblique_support |= fixed && !aligned;
-            }
-          if (oblique_support)
-            {
-              ++n_tied;
-              pair.tied  = true;
-              pair.frame = unit_symmetric_tensor<dim>();
-            }
-        }
-      if (n_tied > 0)
-        pcout << "  " << n_tied
-              << " pair(s) tied: both nodes on a support fixing a direction "
-                 "oblique to the interface; they stick in the free direction "
-                 "and the support carries the rest\n";
-    }
-
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
         const auto  free_modes = blocks[b]->free_rigid_body_modes();
@@ -276,8 +239,6 @@ namespace mbfem
           }
       }
 
-    const bool condensed =
-      !contact || contact->formulation() == ContactFormulation::condensed;
     const LoadHistory &history = parameters.load_history;
     // With an in-situ stress, increment 0 is the geostatic stage at t = 0:
     // nothing released yet, zero displacement, the interfaces in the
@@ -298,59 +259,7 @@ namespace mbfem
         double                      omega           = 1.;
         for (;;)
           {
-            {
-              TimerOutput::Scope t(timer, "load response");
-              for (const auto &block : blocks)
-                {
-                  block->assemble_load(parameters.boundary_conditions, time);
-                  if (condensed)
-                    {
-                      Timer clock;
-                      block->solve();
-                      condensed_seconds += clock.wall_time();
-                    }
-                }
-            }
-            if (contact)
-              {
-                {
-                  TimerOutput::Scope t(timer, "contact iterations");
-                  Timer              clock;
-                  iterations           = contact->solve_increment(blocks, k);
-                  last_contact_seconds = clock.wall_time();
-                  (condensed ? condensed_seconds : monolithic_seconds) +=
-                    last_contact_seconds;
-                }
-                if (reference)
-                  {
-                    TimerOutput::Scope t(timer, "monolithic reference");
-                    Timer              clock;
-                    reference_iterations =
-                      reference->solve_increment(blocks, k);
-                    last_reference_seconds = clock.wall_time();
-                    monolithic_seconds += last_reference_seconds;
-                  }
-                if (dim == 3 && contact->count(ContactState::slip) > 0)
-                  pcout << "    friction against the slip made: largest angle "
-                        << std::fixed << std::setprecision(1)
-                        << contact->misalignment() << " degrees"
-                        << std::defaultfloat << std::setprecision(6) << "\n";
-                TimerOutput::Scope t(timer, "field recovery");
-                Timer              clock;
-                for (unsigned int b = 0; b < blocks.size(); ++b)
-                  if (condensed)
-                    {
-                      std::vector<types::global_dof_index> dofs;
-                      std::vector<double>                  forces;
-                      contact->forces_on_block(b, dofs, forces);
-                      blocks[b]->add_point_forces(dofs, forces);
-                      blocks[b]->solve(contact->floating_amplitudes(b));
-                    }
-                  else
-                    contact->block_solution(b, *blocks[b], blocks[b]->solution);
-                (condensed ? condensed_seconds : monolithic_seconds) +=
-                  clock.wall_time();
-              }
+            solve_pass(k, time, iterations, reference_iterations);
 
             if (!plasticity.enabled)
               break;
@@ -411,6 +320,11 @@ namespace mbfem
           }
         for (const auto &block : blocks)
           block->commit_plastic_strain();
+        if (dim == 3 && contact && contact->count(ContactState::slip) > 0)
+          pcout << "    friction against the slip made: largest angle "
+                << std::fixed << std::setprecision(1) << contact->misalignment()
+                << " degrees" << std::defaultfloat << std::setprecision(6)
+                << "\n";
         for (const auto &block : blocks)
           AssertThrow(std::isfinite(block->solution.l2_norm()),
                       ExcMessage(
@@ -433,7 +347,7 @@ namespace mbfem
                 << plastic_update.max_equivalent << std::defaultfloat
                 << std::setprecision(6) << "\n";
         if (reference)
-          compare_formulations(k);
+          compare_formulations();
         std::string pair_file;
         if (contact)
           {
@@ -507,6 +421,66 @@ namespace mbfem
 
 
   template <int dim>
+  void
+  MultiBodyProblem<dim>::solve_pass(const unsigned int k,
+                                    const double       time,
+                                    unsigned int      &iterations,
+                                    unsigned int      &reference_iterations)
+  {
+    const bool condensed =
+      !contact || contact->formulation() == ContactFormulation::condensed;
+    {
+      TimerOutput::Scope t(timer, "load response");
+      for (const auto &block : blocks)
+        {
+          block->assemble_load(parameters.boundary_conditions, time);
+          if (condensed)
+            {
+              Timer clock;
+              block->solve();
+              condensed_seconds += clock.wall_time();
+            }
+        }
+    }
+    if (contact)
+      {
+        {
+          TimerOutput::Scope t(timer, "contact iterations");
+          Timer              clock;
+          iterations           = contact->solve_increment(blocks, k);
+          last_contact_seconds = clock.wall_time();
+          (condensed ? condensed_seconds : monolithic_seconds) +=
+            last_contact_seconds;
+        }
+        if (reference)
+          {
+            TimerOutput::Scope t(timer, "monolithic reference");
+            Timer              clock;
+            reference_iterations   = reference->solve_increment(blocks, k);
+            last_reference_seconds = clock.wall_time();
+            monolithic_seconds += last_reference_seconds;
+          }
+        TimerOutput::Scope t(timer, "field recovery");
+        Timer              clock;
+        for (unsigned int b = 0; b < blocks.size(); ++b)
+          if (condensed)
+            {
+              std::vector<types::global_dof_index> dofs;
+              std::vector<double>                  forces;
+              contact->forces_on_block(b, dofs, forces);
+              blocks[b]->add_point_forces(dofs, forces);
+              blocks[b]->solve(contact->floating_amplitudes(b));
+            }
+          else
+            contact->block_solution(b, *blocks[b], blocks[b]->solution);
+        (condensed ? condensed_seconds : monolithic_seconds) +=
+          clock.wall_time();
+      }
+  }
+
+
+
+  template <int dim>
   double
   MultiBodyProblem<dim>::max_slip(const ContactSolver<dim> &solver)
   {
@@ -534,7 +508,7 @@ namespace mbfem
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::compare_formulations(const unsigned int k)
+  MultiBodyProblem<dim>::compare_formulations()
   {
     // Forces relative to the largest pair force; gaps and slips relative to
     // the largest displacement of the model (while all pairs stick, gaps
@@ -582,7 +556,6 @@ namespace mbfem
           << differ << " of " << n_pairs << " pairs; differences (relative) "
           << "forces " << difference(force) << ", gaps " << difference(gap)
           << ", slips " << difference(slip) << "\n";
-    (void)k;
   }
 
 

@@ -97,7 +97,8 @@ namespace mbfem
    * frame and the tributary area of its nodes, which is their lumped
    * (Gauss-Lobatto) boundary weight, the mean of the two sides. Nodes left
    * without a partner, or matched ambiguously, end the run with their count
-   * and coordinates.
+   * and coordinates. Pairs on a support oblique to their interface are
+   * tied (ContactPair::tied).
    */
   template <int dim>
   std::vector<ContactPair<dim>>

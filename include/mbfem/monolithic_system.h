@@ -99,17 +99,20 @@ namespace mbfem
       double                  coefficient;
     };
 
-    /** The relative displacements' terms and constants (depend on time). */
+    /**
+     * The relative displacements' constants (they change with the
+     * prescribed values) and, @p with_terms, their terms (which follow the
+     * constraints' structure and do not).
+     */
     void
     make_relative_displacements(
-      const std::vector<std::unique_ptr<Block<dim>>> &blocks);
+      const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+      const bool                                      with_terms);
 
-    std::vector<ContactPair<dim>>                      pairs;
-    std::vector<types::global_dof_index>               offset;
-    types::global_dof_index                            n_displacements = 0;
-    std::vector<std::unique_ptr<SparsityPattern>>      patterns;
-    std::vector<std::unique_ptr<SparseMatrix<double>>> stiffness;
-    double                                             stiffness_scale = 1.;
+    std::vector<ContactPair<dim>>        pairs;
+    std::vector<types::global_dof_index> offset;
+    types::global_dof_index              n_displacements = 0;
+    double                               stiffness_scale = 1.;
 
     std::vector<std::vector<Term>> terms;    // per pair row
     std::vector<double>            constant; // per pair row

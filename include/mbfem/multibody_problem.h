@@ -52,6 +52,17 @@ namespace mbfem
     void
     setup_blocks();
 
+    /**
+     * One pass through increment @p k: every block's load and (condensed)
+     * its response to it, the contact iteration (and the monolithic
+     * reference), the fields. Repeated while the plastic strain settles.
+     */
+    void
+    solve_pass(const unsigned int k,
+               const double       time,
+               unsigned int      &iterations,
+               unsigned int      &reference_iterations);
+
     void
     print_increment(const unsigned int k,
                     const double       time,
@@ -73,10 +84,10 @@ namespace mbfem
 
     /**
      * Formulation "both": the monolithic reference against the condensed
-     * solve of increment @p k, pair by pair; prints and records it.
+     * solve of this increment, pair by pair; prints and records it.
      */
     void
-    compare_formulations(const unsigned int k);
+    compare_formulations();
 
     /**
      * A relative difference for the screen; in test mode, round-off (below
