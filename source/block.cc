@@ -15,8 +15,9 @@ namespace mbfem
   namespace
   {
     /** eps : eps */
+    template <int n>
     double
-    squared(const SymmetricTensor<2, 3> &t)
+    squared(const SymmetricTensor<2, n> &t)
     {
       return t * t;
     }
@@ -175,6 +176,15 @@ namespace mbfem
     plastic_residual.assign(n, SymmetricTensor<2, 3>());
     plastic_residual_previous.assign(n, SymmetricTensor<2, 3>());
     yielded.assign(n, false);
+    newton = parameters.newton;
+    if (newton)
+      {
+        elastic_tangent = mohr_coulomb->elastic_tangent<dim>();
+        tangent.assign(n, elastic_tangent);
+        plastic_tangent.assign(n, false);
+        linearisation_strain.assign(n, SymmetricTensor<2, dim>());
+        linearisation_stress.assign(n, SymmetricTensor<2, dim>());
+      }
   }
 
 
@@ -242,7 +252,24 @@ namespace mbfem
             yielded[index] = mohr_coulomb->return_map(trial, stress, increment);
             const SymmetricTensor<2, 3> updated =
               plastic_strain_committed[index] + increment;
-            const double                JxW = fe_values.JxW(q);
+            const double JxW = fe_values.JxW(q);
+            if (newton)
+              {
+                update_newton_point(index, eps[q], trial, stress, JxW, result);
+                plastic_strain[index]      = updated;
+                plastic_strain_load[index] = updated;
+                result.norm2 += squared(updated) * JxW;
+                ++result.n_points;
+                if (yielded[index])
+                  {
+                    ++result.n_yielded;
+                    result.yielded_measure += JxW;
+                  }
+                result.max_equivalent =
+                  std::max(result.max_equivalent,
+                           std::sqrt(2. / 3. * squared(updated)));
+                continue;
+              }
             const SymmetricTensor<2, 3> residual =
               updated - plastic_strain_load[index];
             result.change2 += squared(residual) * JxW;
@@ -269,6 +296,55 @@ namespace mbfem
           }
       }
     return result;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::update_newton_point(const std::size_t              index,
+                                  const SymmetricTensor<2, dim> &strain,
+                                  const SymmetricTensor<2, 3>   &trial,
+                                  const SymmetricTensor<2, 3>   &stress,
+                                  const double                   JxW,
+                                  PlasticUpdate                 &result)
+  {
+    SymmetricTensor<2, dim> returned, trial_in_plane;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        {
+          returned[i][j]       = stress[i][j];
+          trial_in_plane[i][j] = trial[i][j];
+        }
+    // The residual: the returned stress against the one the linearisation
+    // at u_j predicted (an elastic tangent predicts the trial stress), in
+    // strain units like the initial-stress residual. A point elastic at
+    // both u_j and u_{j+1} has none.
+    if (plastic_tangent[index] || yielded[index])
+      {
+        const SymmetricTensor<2, dim> predicted =
+          plastic_tangent[index] ?
+            linearisation_stress[index] +
+              tangent[index] * (strain - linearisation_strain[index]) :
+            trial_in_plane;
+        result.change2 += squared(returned - predicted) /
+                          Utilities::fixed_power<2>(2. * material.mu()) * JxW;
+        tangent_is_stale = true;
+      }
+    tangent[index] =
+      yielded[index] ? mohr_coulomb->tangent<dim>(trial) : elastic_tangent;
+    plastic_tangent[index]      = yielded[index];
+    linearisation_strain[index] = strain;
+    linearisation_stress[index] = returned;
+  }
+
+
+
+  template <int dim>
+  bool
+  Block<dim>::tangent_changed() const
+  {
+    return tangent_is_stale;
   }
 
 
@@ -461,7 +537,8 @@ namespace mbfem
   template <int dim>
   void
   Block<dim>::cell_matrix(const FEValues<dim> &fe_values,
-                          FullMatrix<double>  &matrix) const
+                          FullMatrix<double>  &matrix,
+                          const unsigned int   cell_index) const
   {
     const FEValuesExtractors::Vector     displacement(0);
     const unsigned int                   n      = fe.n_dofs_per_cell();
@@ -471,6 +548,26 @@ namespace mbfem
     std::vector<double>                  div(n);
 
     matrix = 0.;
+    if (newton)
+      {
+        // The consistent tangent at the points of the plastic state (the
+        // same QGauss(p + 1)); not symmetric for non-associated flow.
+        const unsigned int n_q = fe_values.n_quadrature_points;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const SymmetricTensor<4, dim> &C = tangent[cell_index * n_q + q];
+            for (unsigned int i = 0; i < n; ++i)
+              eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+            const double JxW = fe_values.JxW(q);
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const SymmetricTensor<2, dim> C_eps_j = C * eps[j];
+                for (unsigned int i = 0; i < n; ++i)
+                  matrix(i, j) += (eps[i] * C_eps_j) * JxW;
+              }
+          }
+        return;
+      }
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         for (unsigned int i = 0; i < n; ++i)
@@ -506,7 +603,7 @@ namespace mbfem
     for (const auto &c : dof_handler.active_cell_iterators())
       {
         fe_values.reinit(c);
-        cell_matrix(fe_values, cell);
+        cell_matrix(fe_values, cell, c->active_cell_index());
         c->get_dof_indices(dof_indices);
         constraints.distribute_local_to_global(cell, dof_indices, matrix);
       }
@@ -523,6 +620,7 @@ namespace mbfem
     stiffness = 0.;
     assemble_matrix(constraints, stiffness);
     stiffness.compress(VectorOperation::add);
+    tangent_is_stale = false;
   }
 
 
@@ -659,6 +757,16 @@ namespace mbfem
                 for (unsigned int i = 0; i < dim; ++i)
                   for (unsigned int j = i; j < dim; ++j)
                     s[i][j] = s3[i][j];
+                // Newton: + (C_t - D) eps(u_j), the part of K_t u_j that
+                // the elastic stiffness does not give.
+                if (newton)
+                  {
+                    const std::size_t index =
+                      cell->active_cell_index() * n_plastic_points() + q;
+                    if (plastic_tangent[index])
+                      s += (tangent[index] - elastic_tangent) *
+                           linearisation_strain[index];
+                  }
                 for (unsigned int i = 0; i < n; ++i)
                   cell_load(i) +=
                     (stiffness_values[displacement].symmetric_gradient(i, q) *
@@ -730,7 +838,7 @@ namespace mbfem
         if (has_constrained_dof)
           {
             stiffness_values.reinit(cell);
-            cell_matrix(stiffness_values, matrix);
+            cell_matrix(stiffness_values, matrix, cell->active_cell_index());
             constraints.distribute_local_to_global(cell_load,
                                                    dof_indices,
                                                    load,

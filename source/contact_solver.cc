@@ -643,7 +643,8 @@ namespace mbfem
   unsigned int
   ContactSolver<dim>::solve_increment(
     const std::vector<std::unique_ptr<Block<dim>>> &blocks,
-    const unsigned int                              increment)
+    const unsigned int                              increment,
+    const bool                                      from_last_solve)
   {
     // Data of this increment: Delta_F in the frames (condensed) or the
     // loads of the monolithic system, and F_e.
@@ -683,7 +684,7 @@ namespace mbfem
       return result;
     };
 
-    Trial                 trial  = committed;
+    Trial                 trial  = (from_last_solve ? current : committed);
     bool                  damped = false;
     std::set<std::string> seen{signature(trial)};
     Trial                 last_good, last_good_next;

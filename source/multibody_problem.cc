@@ -185,6 +185,13 @@ namespace mbfem
       }
 
     const std::string formulation = parameters.contact.formulation;
+    AssertThrow(!parameters.plasticity.newton || pairs.empty() ||
+                  formulation == "condensed",
+                ExcMessage(
+                  "'Plasticity/Method = Newton' works with the condensed "
+                  "contact formulation only (its tangent flexibilities); "
+                  "set 'Contact/Formulation = condensed' or use the "
+                  "initial-stress method."));
     if (!pairs.empty())
       {
         const std::string &package = parameters.linear_solver.package;
@@ -259,7 +266,14 @@ namespace mbfem
         double                      omega           = 1.;
         for (;;)
           {
-            solve_pass(k, time, iterations, reference_iterations);
+            if (plasticity.newton)
+              update_tangent_stiffness();
+            // Newton: the contact states of the last pass start the next.
+            solve_pass(k,
+                       time,
+                       iterations,
+                       reference_iterations,
+                       plasticity.newton && plastic_iterations > 0);
 
             if (!plasticity.enabled)
               break;
@@ -278,8 +292,15 @@ namespace mbfem
             const double rate =
               (previous_change > 0. ? change / previous_change : 0.);
             previous_change = change;
-            // Progress on long runs: a line every 100 iterations.
-            if (plastic_iterations % 100 == 0 && !parameters.run.test_mode)
+            // Progress on long runs: a line every 100 iterations, or every
+            // Newton iteration (few, each with new factorisations).
+            if (plasticity.newton && !parameters.run.test_mode)
+              pcout << "    Newton iteration " << plastic_iterations
+                    << ": residual " << std::scientific << std::setprecision(3)
+                    << change << std::defaultfloat << ", "
+                    << plastic_update.n_yielded << " points yielded"
+                    << std::setprecision(6) << "\n";
+            else if (plastic_iterations % 100 == 0 && !parameters.run.test_mode)
               pcout << "    plastic iteration " << plastic_iterations
                     << ": change " << std::scientific << std::setprecision(3)
                     << change << ", relaxation " << std::defaultfloat << omega
@@ -307,6 +328,8 @@ namespace mbfem
             // Aitken's relaxation of the fixed point x = F(x): omega from
             // the last two residuals (plain steps converge at a rate near 1
             // once the plastic zone is large, e.g. with dilatancy).
+            if (plasticity.newton)
+              continue; // the new tangent goes in before the next pass
             omega =
               (!plasticity.aitken || plastic_iterations == 1 ||
                    plastic_update.aitken_denominator <= 0. ?
@@ -425,7 +448,8 @@ namespace mbfem
   MultiBodyProblem<dim>::solve_pass(const unsigned int k,
                                     const double       time,
                                     unsigned int      &iterations,
-                                    unsigned int      &reference_iterations)
+                                    unsigned int      &reference_iterations,
+                                    const bool         from_last_solve)
   {
     const bool condensed =
       !contact || contact->formulation() == ContactFormulation::condensed;
@@ -447,7 +471,7 @@ namespace mbfem
         {
           TimerOutput::Scope t(timer, "contact iterations");
           Timer              clock;
-          iterations           = contact->solve_increment(blocks, k);
+          iterations = contact->solve_increment(blocks, k, from_last_solve);
           last_contact_seconds = clock.wall_time();
           (condensed ? condensed_seconds : monolithic_seconds) +=
             last_contact_seconds;
@@ -475,6 +499,35 @@ namespace mbfem
             contact->block_solution(b, *blocks[b], blocks[b]->solution);
         (condensed ? condensed_seconds : monolithic_seconds) +=
           clock.wall_time();
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::update_tangent_stiffness()
+  {
+    bool changed = false;
+    for (const auto &block : blocks)
+      if (block->tangent_changed())
+        {
+          changed = true;
+          {
+            TimerOutput::Scope t(timer, "assembly");
+            block->assemble_stiffness();
+          }
+          TimerOutput::Scope t(timer, "factorisation");
+          Timer              clock;
+          block->factorize();
+          condensed_seconds += clock.wall_time();
+        }
+    if (changed && contact)
+      {
+        TimerOutput::Scope t(timer, "flexibility");
+        Timer              clock;
+        contact->setup(blocks);
+        condensed_seconds += clock.wall_time();
       }
   }
 

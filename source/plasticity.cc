@@ -50,6 +50,17 @@ namespace mbfem
                         "scaled by Aitken's factor from the last two "
                         "residuals (bounded to [0.05, 20]); none: plain "
                         "steps, slower but monotone.");
+      prm.declare_entry(
+        "Method",
+        "initial stress",
+        Patterns::Selection("initial stress|Newton"),
+        "initial stress: each block keeps its elastic stiffness, its one "
+        "factorisation and its contact flexibility; the plastic strain is a "
+        "load, iterated to a fixed point (linear convergence, slow near a "
+        "limit load). Newton: the consistent tangent; every iteration "
+        "reassembles and refactorises each block and recomputes the contact "
+        "flexibilities (quadratic convergence; condensed contact "
+        "formulation only).");
       prm.declare_entry("Maximum iterations",
                         "1000",
                         Patterns::Integer(1),
@@ -73,6 +84,7 @@ namespace mbfem
       tolerance       = prm.get_double("Tolerance");
       max_iterations  = prm.get_integer("Maximum iterations");
       aitken          = prm.get("Relaxation") == "aitken";
+      newton          = prm.get("Method") == "Newton";
       AssertThrow(!enabled || friction_angle > 0.,
                   ExcMessage("Plasticity/Friction angle must be > 0 (a "
                              "Tresca rock is not supported)."));
@@ -202,4 +214,61 @@ namespace mbfem
       }
     return true;
   }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  MohrCoulomb::tangent(const SymmetricTensor<2, 3> &trial) const
+  {
+    // Central differences with a strain step of 1e-6 of the stress scale:
+    // truncation ~1e-12 where the mapping is smooth, round-off ~1e-10.
+    const double            h = 1e-6 * (trial.norm() + sigma_c) / (2. * mu);
+    SymmetricTensor<4, dim> result;
+    SymmetricTensor<2, 3>   plus, minus, unused;
+    for (unsigned int m = 0; m < dim; ++m)
+      for (unsigned int n = m; n < dim; ++n)
+        {
+          SymmetricTensor<2, 3> strain;
+          strain[m][n]                     = h; // also [n][m]
+          const SymmetricTensor<2, 3> step = elastic_stress(strain);
+          return_map(trial + step, plus, unused);
+          return_map(trial - step, minus, unused);
+          // C : E^{mn} = dS; for m != n the contraction counts C[k][l][m][n]
+          // twice.
+          const double factor = (m == n ? 1. : 0.5) / (2. * h);
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = k; l < dim; ++l)
+              result[k][l][m][n] = factor * (plus[k][l] - minus[k][l]);
+        }
+    return result;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  MohrCoulomb::elastic_tangent() const
+  {
+    SymmetricTensor<4, dim> result;
+    for (unsigned int k = 0; k < dim; ++k)
+      for (unsigned int l = k; l < dim; ++l)
+        for (unsigned int m = 0; m < dim; ++m)
+          for (unsigned int n = m; n < dim; ++n)
+            result[k][l][m][n] =
+              (k == l && m == n ? lambda : 0.) +
+              (k == m && l == n ? (k == l ? 2. : 1.) * mu : 0.);
+    return result;
+  }
+
+
+
+  template SymmetricTensor<4, 2>
+  MohrCoulomb::tangent<2>(const SymmetricTensor<2, 3> &) const;
+  template SymmetricTensor<4, 3>
+  MohrCoulomb::tangent<3>(const SymmetricTensor<2, 3> &) const;
+  template SymmetricTensor<4, 2>
+  MohrCoulomb::elastic_tangent<2>() const;
+  template SymmetricTensor<4, 3>
+  MohrCoulomb::elastic_tangent<3>() const;
 } // namespace mbfem

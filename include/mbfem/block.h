@@ -148,6 +148,15 @@ namespace mbfem
     void
     relax_plastic_strain(const double omega);
 
+    /**
+     * Newton's method (Plasticity/Method): whether the tangent stiffness
+     * differs from the one last assembled, so that the block must be
+     * reassembled and refactorised and its flexibility recomputed before
+     * the next pass. Always false for the initial-stress method.
+     */
+    bool
+    tangent_changed() const;
+
     /** Accepts the plastic strain of the converged increment. */
     void
     commit_plastic_strain();
@@ -304,7 +313,21 @@ namespace mbfem
      */
     void
     cell_matrix(const FEValues<dim> &fe_values,
-                FullMatrix<double>  &matrix) const;
+                FullMatrix<double>  &matrix,
+                const unsigned int   cell_index) const;
+
+    /**
+     * Newton's method at one point of the plastic state: the residual of
+     * the linearisation into @p result, and the new tangent and
+     * linearisation point.
+     */
+    void
+    update_newton_point(const std::size_t              index,
+                        const SymmetricTensor<2, dim> &strain,
+                        const SymmetricTensor<2, 3>   &trial,
+                        const SymmetricTensor<2, 3>   &stress,
+                        const double                   JxW,
+                        PlasticUpdate                 &result);
 
     /** Adds the stiffness, through @p constraints, to @p matrix. */
     template <typename MatrixType>
@@ -340,16 +363,30 @@ namespace mbfem
     SymmetricTensor<2, 3>
     plastic_stress(const unsigned int cell, const unsigned int q) const;
 
-    std::unique_ptr<MohrCoulomb>         mohr_coulomb;
-    std::vector<SymmetricTensor<2, 3>>   plastic_strain_committed;
-    std::vector<SymmetricTensor<2, 3>>   plastic_strain;      // F(x)
-    std::vector<SymmetricTensor<2, 3>>   plastic_strain_load; // x
-    std::vector<SymmetricTensor<2, 3>>   plastic_residual;
-    std::vector<SymmetricTensor<2, 3>>   plastic_residual_previous;
-    bool                                 have_previous_residual = false;
-    std::vector<bool>                    yielded;
-    const InSituStress                  *in_situ    = nullptr;
-    const Excavation                    *excavation = nullptr;
+    std::unique_ptr<MohrCoulomb>       mohr_coulomb;
+    std::vector<SymmetricTensor<2, 3>> plastic_strain_committed;
+    std::vector<SymmetricTensor<2, 3>> plastic_strain;      // F(x)
+    std::vector<SymmetricTensor<2, 3>> plastic_strain_load; // x
+    std::vector<SymmetricTensor<2, 3>> plastic_residual;
+    std::vector<SymmetricTensor<2, 3>> plastic_residual_previous;
+    bool                               have_previous_residual = false;
+    std::vector<bool>                  yielded;
+    /**
+     * Newton's method: the consistent tangent at every plastic point, and
+     * the strain and (in-plane) stress it was taken at, the linearisation
+     * point u_j. The load then carries int B^T (C_t - D) eps(u_j), so that
+     * the block's solve is K_t u_{j+1} = f - f_int(u_j) + K_t u_j and keeps
+     * the form (and the contact flexibility) of the elastic one.
+     */
+    bool                                 newton = false;
+    SymmetricTensor<4, dim>              elastic_tangent;
+    std::vector<SymmetricTensor<4, dim>> tangent;
+    std::vector<bool>                    plastic_tangent;
+    std::vector<SymmetricTensor<2, dim>> linearisation_strain;
+    std::vector<SymmetricTensor<2, dim>> linearisation_stress;
+    bool                                 tangent_is_stale = false;
+    const InSituStress                  *in_situ          = nullptr;
+    const Excavation                    *excavation       = nullptr;
     AffineConstraints<double>            physical_constraints;
     AffineConstraints<double>            constraints;
     AffineConstraints<double>            homogeneous_constraints;

@@ -91,11 +91,15 @@ namespace mbfem
      * increment (assemble_load()); condensed, its solution must hold its
      * response u_F to that load. Returns the number of
      * state iterations; throws with a message naming blocks or pairs when
-     * the increment has no consistent solution.
+     * the increment has no consistent solution. The state iteration starts
+     * from the committed states, or with @p from_last_solve from those of
+     * the last solve of this increment (Newton's passes, whose linear
+     * problems differ little from one to the next).
      */
     unsigned int
     solve_increment(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
-                    const unsigned int                              increment);
+                    const unsigned int                              increment,
+                    const bool from_last_solve = false);
 
     /** Accepts the converged increment as the start of the next one. */
     void

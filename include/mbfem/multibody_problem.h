@@ -57,11 +57,20 @@ namespace mbfem
      * its response to it, the contact iteration (and the monolithic
      * reference), the fields. Repeated while the plastic strain settles.
      */
+    /**
+     * Newton's method for plastic blocks: reassembles and refactorises every
+     * block whose tangent changed, and then recomputes the contact
+     * flexibilities.
+     */
+    void
+    update_tangent_stiffness();
+
     void
     solve_pass(const unsigned int k,
                const double       time,
                unsigned int      &iterations,
-               unsigned int      &reference_iterations);
+               unsigned int      &reference_iterations,
+               const bool         from_last_solve = false);
 
     void
     print_increment(const unsigned int k,

@@ -34,6 +34,13 @@ namespace mbfem
     unsigned int max_iterations  = 1000;
     /** Aitken's relaxation of the fixed-point iteration (else plain). */
     bool aitken = true;
+    /**
+     * Newton's method with the consistent tangent instead of the
+     * initial-stress iteration: every iteration reassembles and
+     * refactorises each block with its tangent stiffness and recomputes the
+     * contact flexibilities.
+     */
+    bool newton = false;
   };
 
 
@@ -68,6 +75,24 @@ namespace mbfem
     return_map(const SymmetricTensor<2, 3> &trial,
                SymmetricTensor<2, 3>       &stress,
                SymmetricTensor<2, 3>       &plastic_strain) const;
+
+    /**
+     * The consistent tangent d sigma / d eps of return_map() at @p trial,
+     * for strains in the first dim directions (plane strain keeps eps_zz =
+     * 0): C : d eps is the change of the returned stress. By central
+     * differences of the return mapping (Perez-Foguet, Rodriguez-Ferran and
+     * Huerta, IJNME 2000): the mapping switches between plane, edges and
+     * apex, and one differentiated code path for each would be three
+     * places to get wrong. Not symmetric for non-associated flow.
+     */
+    template <int dim>
+    SymmetricTensor<4, dim>
+    tangent(const SymmetricTensor<2, 3> &trial) const;
+
+    /** D restricted to the first dim directions (plane strain in 2D). */
+    template <int dim>
+    SymmetricTensor<4, dim>
+    elastic_tangent() const;
 
     /** D eps for a 3x3 strain. */
     SymmetricTensor<2, 3>
