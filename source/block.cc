@@ -184,6 +184,10 @@ namespace mbfem
         plastic_tangent.assign(n, false);
         linearisation_strain.assign(n, SymmetricTensor<2, dim>());
         linearisation_stress.assign(n, SymmetricTensor<2, dim>());
+        tangent_committed              = tangent;
+        plastic_tangent_committed      = plastic_tangent;
+        linearisation_strain_committed = linearisation_strain;
+        linearisation_stress_committed = linearisation_stress;
       }
   }
 
@@ -368,6 +372,34 @@ namespace mbfem
     plastic_strain_committed = plastic_strain;
     plastic_strain_load      = plastic_strain;
     have_previous_residual   = false;
+    if (newton)
+      {
+        tangent_committed              = tangent;
+        plastic_tangent_committed      = plastic_tangent;
+        linearisation_strain_committed = linearisation_strain;
+        linearisation_stress_committed = linearisation_stress;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::restore_plastic_state()
+  {
+    if (!mohr_coulomb)
+      return;
+    plastic_strain         = plastic_strain_committed;
+    plastic_strain_load    = plastic_strain_committed;
+    have_previous_residual = false;
+    if (newton)
+      {
+        tangent              = tangent_committed;
+        plastic_tangent      = plastic_tangent_committed;
+        linearisation_strain = linearisation_strain_committed;
+        linearisation_stress = linearisation_stress_committed;
+        tangent_is_stale     = true;
+      }
   }
 
 

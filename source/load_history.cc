@@ -16,6 +16,16 @@ namespace mbfem
                         "1",
                         Patterns::Double(0.),
                         "Pseudo-time at the end of the load history.");
+      prm.declare_entry(
+        "Maximum step halvings",
+        "0",
+        Patterns::Integer(0, 20),
+        "An increment that fails (contact states that cycle, a plastic "
+        "iteration that does not converge) is retried from its start in "
+        "steps of half the size, and of half that, up to this many times; "
+        "the steps are committed like increments (friction and plasticity "
+        "follow the finer path) but written only at the increments. 0: a "
+        "failed increment ends the run.");
     }
     prm.leave_subsection();
   }
@@ -29,6 +39,7 @@ namespace mbfem
     {
       n_increments = prm.get_integer("Number of increments");
       end_time     = prm.get_double("End time");
+      max_halvings = prm.get_integer("Maximum step halvings");
     }
     prm.leave_subsection();
   }

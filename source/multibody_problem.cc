@@ -254,93 +254,64 @@ namespace mbfem
       parameters.in_situ_stress.enabled ? 0 : 1;
     for (unsigned int k = first_increment; k <= history.n_increments; ++k)
       {
-        const double time       = history.time(k);
-        unsigned int iterations = 0, reference_iterations = 0;
-        // Plastic blocks: the increment is repeated with the plastic strain
-        // of the last pass as a load until that strain settles (the
-        // initial-stress method); elastic blocks pass once.
+        const double                time       = history.time(k);
+        unsigned int                iterations = 0, reference_iterations = 0;
         const PlasticityParameters &plasticity         = parameters.plasticity;
         unsigned int                plastic_iterations = 0;
         PlasticUpdate               plastic_update;
-        double                      previous_change = 0.;
-        double                      omega           = 1.;
-        for (;;)
+        // A failed increment may be retried from its start in steps of half
+        // the size ('Load history/Maximum step halvings'); the steps before
+        // the last are committed like increments.
+        const double start   = (k == 0 ? 0. : history.time(k - 1));
+        double       reached = start, step = time - start;
+        unsigned int halvings = 0, n_steps = 0;
+        do
           {
-            if (plasticity.newton)
-              update_tangent_stiffness();
-            // Newton: the contact states of the last pass start the next.
-            solve_pass(k,
-                       time,
-                       iterations,
-                       reference_iterations,
-                       plasticity.newton && plastic_iterations > 0);
-
-            if (!plasticity.enabled)
-              break;
-            ++plastic_iterations;
-            plastic_update = PlasticUpdate();
-            {
-              TimerOutput::Scope t(timer, "plasticity");
-              for (const auto &block : blocks)
-                plastic_update += block->update_plastic_strain();
-            }
-            const double change = std::sqrt(
-              plastic_update.change2 / std::max(plastic_update.norm2, 1e-300));
-            // The initial-stress iteration converges linearly, at a rate
-            // that nears 1 as the plastic zone grows: what is left to go is
-            // about change * rate / (1 - rate), not the change itself.
-            const double rate =
-              (previous_change > 0. ? change / previous_change : 0.);
-            previous_change = change;
-            // Progress on long runs: a line every 100 iterations, or every
-            // Newton iteration (few, each with new factorisations).
-            if (plasticity.newton && !parameters.run.test_mode)
-              pcout << "    Newton iteration " << plastic_iterations
-                    << ": residual " << std::scientific << std::setprecision(3)
-                    << change << std::defaultfloat << ", "
-                    << plastic_update.n_yielded << " points yielded"
-                    << std::setprecision(6) << "\n";
-            else if (plastic_iterations % 100 == 0 && !parameters.run.test_mode)
-              pcout << "    plastic iteration " << plastic_iterations
-                    << ": change " << std::scientific << std::setprecision(3)
-                    << change << ", relaxation " << std::defaultfloat << omega
-                    << ", " << plastic_update.n_yielded << " points yielded"
-                    << std::setprecision(6) << "\n";
-            const double remaining =
-              (rate < 1. ? change * std::max(rate / (1. - rate), 1.) :
-                           change * 1e3);
-            if (plastic_update.change2 == 0. ||
-                remaining < plasticity.tolerance)
-              break;
-            AssertThrow(
-              plastic_iterations < plasticity.max_iterations,
-              ExcMessage(
-                "Increment " + std::to_string(k) + " (t = " +
-                std::to_string(time) + "): the plastic strain still changes " +
-                "by " + std::to_string(change) + " (relative) after " +
-                std::to_string(plastic_iterations) +
-                " iterations ('Plasticity/Maximum iterations'). The rock may "
-                "be failing (no equilibrium with this strength), or the "
-                "increment is too large: use more load increments. Results "
-                "of the earlier increments are in " +
-                parameters.output.directory + "."));
-
-            // Aitken's relaxation of the fixed point x = F(x): omega from
-            // the last two residuals (plain steps converge at a rate near 1
-            // once the plastic zone is large, e.g. with dilatancy).
-            if (plasticity.newton)
-              continue; // the new tangent goes in before the next pass
-            omega =
-              (!plasticity.aitken || plastic_iterations == 1 ||
-                   plastic_update.aitken_denominator <= 0. ?
-                 1. :
-                 std::min(20.,
-                          std::max(0.05,
-                                   -omega * plastic_update.aitken_numerator /
-                                     plastic_update.aitken_denominator)));
-            for (const auto &block : blocks)
-              block->relax_plastic_strain(omega);
+            // (The last step ends at the increment's time exactly, not a
+            // round-off short of it.)
+            const double target =
+              (halvings == 0 || reached + step > time - 1e-9 * step ?
+                 time :
+                 reached + step);
+            try
+              {
+                plastic_iterations = solve_step(
+                  k, target, iterations, reference_iterations, plastic_update);
+              }
+            catch (const ExceptionBase &e)
+              {
+                if (halvings >= history.max_halvings)
+                  throw;
+                for (const auto &block : blocks)
+                  block->restore_plastic_state();
+                std::ostringstream message;
+                e.print_info(message);
+                std::string reason = message.str();
+                reason = reason.substr(reason.find_first_not_of(" \n"));
+                reason = reason.substr(0, reason.find('\n'));
+                ++halvings;
+                step = (target - reached) / 2.;
+                pcout << "    step to t = " << target << " failed (" << reason
+                      << "); halving " << halvings << " of "
+                      << history.max_halvings << ": steps of " << step << "\n";
+                continue;
+              }
+            reached = target;
+            ++n_steps;
+            if (reached < time)
+              {
+                for (const auto &block : blocks)
+                  block->commit_plastic_strain();
+                if (contact)
+                  contact->commit();
+                if (reference)
+                  reference->commit();
+              }
           }
+        while (reached < time);
+        if (n_steps > 1)
+          pcout << "    increment " << k << " reached in " << n_steps
+                << " steps\n";
         for (const auto &block : blocks)
           block->commit_plastic_strain();
         if (dim == 3 && contact && contact->count(ContactState::slip) > 0)
@@ -500,6 +471,101 @@ namespace mbfem
         (condensed ? condensed_seconds : monolithic_seconds) +=
           clock.wall_time();
       }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MultiBodyProblem<dim>::solve_step(const unsigned int k,
+                                    const double       time,
+                                    unsigned int      &iterations,
+                                    unsigned int      &reference_iterations,
+                                    PlasticUpdate     &plastic_update)
+  {
+    // Plastic blocks: the increment is repeated with the plastic strain
+    // of the last pass as a load until that strain settles (the
+    // initial-stress method); elastic blocks pass once.
+    const PlasticityParameters &plasticity         = parameters.plasticity;
+    unsigned int                plastic_iterations = 0;
+    double                      previous_change    = 0.;
+    double                      omega              = 1.;
+    for (;;)
+      {
+        if (plasticity.newton)
+          update_tangent_stiffness();
+        // Newton: the contact states of the last pass start the next.
+        solve_pass(k,
+                   time,
+                   iterations,
+                   reference_iterations,
+                   plasticity.newton && plastic_iterations > 0);
+
+        if (!plasticity.enabled)
+          break;
+        ++plastic_iterations;
+        plastic_update = PlasticUpdate();
+        {
+          TimerOutput::Scope t(timer, "plasticity");
+          for (const auto &block : blocks)
+            plastic_update += block->update_plastic_strain();
+        }
+        const double change = std::sqrt(plastic_update.change2 /
+                                        std::max(plastic_update.norm2, 1e-300));
+        // The initial-stress iteration converges linearly, at a rate
+        // that nears 1 as the plastic zone grows: what is left to go is
+        // about change * rate / (1 - rate), not the change itself.
+        const double rate =
+          (previous_change > 0. ? change / previous_change : 0.);
+        previous_change = change;
+        // Progress on long runs: a line every 100 iterations, or every
+        // Newton iteration (few, each with new factorisations).
+        if (plasticity.newton && !parameters.run.test_mode)
+          pcout << "    Newton iteration " << plastic_iterations
+                << ": residual " << std::scientific << std::setprecision(3)
+                << change << std::defaultfloat << ", "
+                << plastic_update.n_yielded << " points yielded"
+                << std::setprecision(6) << "\n";
+        else if (plastic_iterations % 100 == 0 && !parameters.run.test_mode)
+          pcout << "    plastic iteration " << plastic_iterations << ": change "
+                << std::scientific << std::setprecision(3) << change
+                << ", relaxation " << std::defaultfloat << omega << ", "
+                << plastic_update.n_yielded << " points yielded"
+                << std::setprecision(6) << "\n";
+        const double remaining =
+          (rate < 1. ? change * std::max(rate / (1. - rate), 1.) :
+                       change * 1e3);
+        if (plastic_update.change2 == 0. || remaining < plasticity.tolerance)
+          break;
+        AssertThrow(
+          plastic_iterations < plasticity.max_iterations,
+          ExcMessage(
+            "Increment " + std::to_string(k) + " (t = " + std::to_string(time) +
+            "): the plastic strain still changes " + "by " +
+            std::to_string(change) + " (relative) after " +
+            std::to_string(plastic_iterations) +
+            " iterations ('Plasticity/Maximum iterations'). The rock may "
+            "be failing (no equilibrium with this strength), or the "
+            "increment is too large: use more load increments. Results "
+            "of the earlier increments are in " +
+            parameters.output.directory + "."));
+
+        // Aitken's relaxation of the fixed point x = F(x): omega from
+        // the last two residuals (plain steps converge at a rate near 1
+        // once the plastic zone is large, e.g. with dilatancy).
+        if (plasticity.newton)
+          continue; // the new tangent goes in before the next pass
+        omega = (!plasticity.aitken || plastic_iterations == 1 ||
+                     plastic_update.aitken_denominator <= 0. ?
+                   1. :
+                   std::min(20.,
+                            std::max(0.05,
+                                     -omega * plastic_update.aitken_numerator /
+                                       plastic_update.aitken_denominator)));
+        for (const auto &block : blocks)
+          block->relax_plastic_strain(omega);
+      }
+    return plastic_iterations;
   }
 
 

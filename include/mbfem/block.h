@@ -162,6 +162,13 @@ namespace mbfem
     commit_plastic_strain();
 
     /**
+     * Goes back to the plastic state of the last commit (a failed increment
+     * is retried in smaller steps).
+     */
+    void
+    restore_plastic_state();
+
+    /**
      * Per active cell: the mean of D eps_p over its quadrature points (for
      * the stresses at output points) and the fraction of them yielded.
      */
@@ -385,8 +392,13 @@ namespace mbfem
     std::vector<SymmetricTensor<2, dim>> linearisation_strain;
     std::vector<SymmetricTensor<2, dim>> linearisation_stress;
     bool                                 tangent_is_stale = false;
-    const InSituStress                  *in_situ          = nullptr;
-    const Excavation                    *excavation       = nullptr;
+    /** The Newton state at the last commit, for restore_plastic_state(). */
+    std::vector<SymmetricTensor<4, dim>> tangent_committed;
+    std::vector<bool>                    plastic_tangent_committed;
+    std::vector<SymmetricTensor<2, dim>> linearisation_strain_committed;
+    std::vector<SymmetricTensor<2, dim>> linearisation_stress_committed;
+    const InSituStress                  *in_situ    = nullptr;
+    const Excavation                    *excavation = nullptr;
     AffineConstraints<double>            physical_constraints;
     AffineConstraints<double>            constraints;
     AffineConstraints<double>            homogeneous_constraints;

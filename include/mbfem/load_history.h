@@ -27,6 +27,14 @@ namespace mbfem
 
     unsigned int n_increments = 1;
     double       end_time     = 1.;
+    /**
+     * How often an increment that fails (its contact states cycle, or its
+     * plastic iteration does not converge) may be retried in steps of half
+     * the size, each step committed as if it were an increment (friction
+     * and plasticity follow the finer path); results are written at the
+     * increments only.
+     */
+    unsigned int max_halvings = 0;
   };
 } // namespace mbfem
 

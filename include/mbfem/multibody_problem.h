@@ -58,6 +58,20 @@ namespace mbfem
      * reference), the fields. Repeated while the plastic strain settles.
      */
     /**
+     * Solves increment @p k up to pseudo-time @p time from the committed
+     * state: one pass for elastic blocks, repeated passes until the plastic
+     * strain settles for plastic ones. Returns the number of plastic
+     * iterations; throws if the contact states or the plastic iteration
+     * do not converge.
+     */
+    unsigned int
+    solve_step(const unsigned int k,
+               const double       time,
+               unsigned int      &iterations,
+               unsigned int      &reference_iterations,
+               PlasticUpdate     &plastic_update);
+
+    /**
      * Newton's method for plastic blocks: reassembles and refactorises every
      * block whose tangent changed, and then recomputes the contact
      * flexibilities.
