@@ -37,7 +37,9 @@ def read_block(path):
     s1 = vtk_to_numpy(data.GetArray("sigma_1"))
     u = vtk_to_numpy(data.GetArray("displacement"))[:, :2]
     # DataOut writes cell data as values at the cells' points.
-    yielded_array = data.GetArray("yielded")
+    # The plastic zone: cells with plastic strain (at some time), not only
+    # those yielding in the last increment.
+    yielded_array = data.GetArray("plastic_strain") or data.GetArray("yielded")
     centres = []
     if yielded_array is not None:
         centres = list(points[vtk_to_numpy(yielded_array) > 0])
@@ -76,7 +78,7 @@ def main():
     yielded = np.array(getattr(read_block, "yielded", []))
     if len(yielded):
         ax.plot(yielded[:, 0], yielded[:, 1], "x", color="darkgreen", ms=3,
-                label="points of yielded cells")
+                label="plastic zone (cells with plastic strain)")
     ax.plot([-15, 15, 15, -15, -15], [-30, -30, 30, 30, -30], "k-", lw=1.5)
     x = np.array([-80, 80])
     ax.plot(x, -20 - (x + 15) * T, "m-", lw=1.5, label="fault")
