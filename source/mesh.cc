@@ -259,6 +259,8 @@ namespace mbfem
     std::vector<Point<dim>>              vertices;
     std::vector<CellData<dim>>           cells;
     SubCellData                          faces;
+    std::set<unsigned int>               interior_faces;
+
 
     const auto number = [&](const unsigned int global) {
       const auto [it, inserted] =
@@ -287,6 +289,12 @@ namespace mbfem
               else if (cell->neighbor(f)->material_id() != id)
                 boundary_id =
                   interface_boundary_id(cell->neighbor(f)->material_id());
+              else if (face->manifold_id() != numbers::flat_manifold_id &&
+                       interior_faces.insert(face->index()).second)
+                // An interior face keeps its manifold: without it, it
+                // would be flat in the block while its cells are curved,
+                // and MappingQ(p >= 2) in 3D gives a wrong geometry.
+                boundary_id = numbers::internal_face_boundary_id;
               else
                 continue;
 
