@@ -280,14 +280,24 @@ namespace mbfem
               }
             catch (const ExceptionBase &e)
               {
-                if (halvings >= history.max_halvings)
+                if (history.max_halvings == 0)
                   throw;
-                for (const auto &block : blocks)
-                  block->restore_plastic_state();
                 std::ostringstream message;
                 e.print_info(message);
                 std::string reason = message.str();
                 reason = reason.substr(reason.find_first_not_of(" \n"));
+                AssertThrow(halvings < history.max_halvings,
+                            ExcMessage(
+                              reason +
+                              "    The increment was also tried in steps " +
+                              "down to 1/" + std::to_string(1u << halvings) +
+                              " of its size ('Load history/Maximum step "
+                              "halvings = " +
+                              std::to_string(history.max_halvings) +
+                              "'). Results of the earlier increments are in " +
+                              parameters.output.directory + "."));
+                for (const auto &block : blocks)
+                  block->restore_plastic_state();
                 reason = reason.substr(0, reason.find('\n'));
                 ++halvings;
                 step = (target - reached) / 2.;
