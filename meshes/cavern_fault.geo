@@ -17,6 +17,13 @@
 If (!Exists(h))
   h = 4;
 EndIf
+// yw: where the fault enters the left wall (y, cavern centre at the
+// origin); -20 is 10 m above the floor. It leaves through the floor while
+// -30 < yw < -30 + 30 tan 30 = -12.7 (scripts/cavern_fault_position.sh
+// varies it: gmsh -setnumber yw -25 ...).
+If (!Exists(yw))
+  yw = -20;
+EndIf
 H = 40;   // far field
 t = Tan(30*Pi/180);
 
@@ -30,14 +37,14 @@ Point(1) = {-165, -180, 0, H};          // A
 Point(2) = { 165, -180, 0, H};          // B
 Point(3) = { 165,  180, 0, H};          // C
 Point(4) = {-165,  180, 0, H};          // D
-Point(5) = {-165, -20 + 150*t, 0, H/2}; // FL, fault on the left side
-Point(6) = { 165, -20 - 180*t, 0, H/2}; // FR, fault on the right side
+Point(5) = {-165, yw + 150*t, 0, H/2}; // FL, fault on the left side
+Point(6) = { 165, yw - 180*t, 0, H/2}; // FR, fault on the right side
 Point(7) = {-15, -30, 0, h};            // P1 floor left
 Point(8) = { 15, -30, 0, h};            // P2 floor right
 Point(9) = { 15,  30, 0, h};            // P3 crown right
 Point(10) = {-15, 30, 0, h};            // P4 crown left
-Point(11) = {-15, -20, 0, h};           // FW fault in the left wall
-Point(12) = {-15 + 10/t, -30, 0, h};    // FF fault in the floor
+Point(11) = {-15, yw, 0, h};           // FW fault in the left wall
+Point(12) = {-15 + (yw + 30)/t, -30, 0, h}; // FF fault in the floor
 
 Line(1) = {1, 2};    // base
 Line(2) = {2, 6};    // right side, below the fault
