@@ -6,7 +6,7 @@
 # (the default) and 15 m above the floor (yw = -25, -20, -15), and prints
 # the left wall's slip and the largest slip of each run.
 #
-#   bash scripts/cavern_fault_position.sh [BUILD_DIR]   (about 3 minutes)
+#   bash scripts/cavern_fault_position.sh [BUILD_DIR]   (about 3.5 minutes)
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
 mbfem=${1:-$root/build}/mbfem

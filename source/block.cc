@@ -10,6 +10,8 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
+
 namespace mbfem
 {
   namespace
@@ -257,7 +259,7 @@ namespace mbfem
             const SymmetricTensor<2, 3> updated =
               plastic_strain_committed[index] + increment;
             const double JxW = fe_values.JxW(q);
-            if (newton)
+            if (newton && !newton_suspended)
               {
                 update_newton_point(index, eps[q], trial, stress, JxW, result);
                 plastic_strain[index]      = updated;
@@ -349,6 +351,30 @@ namespace mbfem
   Block<dim>::tangent_changed() const
   {
     return tangent_is_stale;
+  }
+
+
+
+  template <int dim>
+  bool
+  Block<dim>::suspend_newton(const bool suspend)
+  {
+    if (!newton)
+      return false;
+    newton_suspended = suspend;
+    if (!suspend)
+      return false;
+    // The elastic tangent everywhere: the load then carries D eps_p alone,
+    // as in the initial-stress method, and the residual below is measured
+    // as there (the change of the plastic strain).
+    for (std::size_t i = 0; i < tangent.size(); ++i)
+      if (plastic_tangent[i])
+        {
+          tangent[i]         = elastic_tangent;
+          plastic_tangent[i] = false;
+        }
+    tangent_is_stale = assembled_plastic_tangent;
+    return assembled_plastic_tangent;
   }
 
 
@@ -653,6 +679,10 @@ namespace mbfem
     assemble_matrix(constraints, stiffness);
     stiffness.compress(VectorOperation::add);
     tangent_is_stale = false;
+    assembled_plastic_tangent =
+      newton &&
+      std::find(plastic_tangent.begin(), plastic_tangent.end(), true) !=
+        plastic_tangent.end();
   }
 
 

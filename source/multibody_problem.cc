@@ -374,6 +374,10 @@ namespace mbfem
           }
       }
 
+    if (newton_suspensions > 0)
+      pcout << "  Newton's tangent system had no solution in "
+            << newton_suspensions << " step(s); the elastic stiffness "
+            << "(initial-stress method) took over in them\n";
     if (contact)
       print_interface_summary();
     if (reference)
@@ -500,16 +504,52 @@ namespace mbfem
     unsigned int                plastic_iterations = 0;
     double                      previous_change    = 0.;
     double                      omega              = 1.;
+    // Newton may give way to the initial-stress method for the rest of
+    // the step (see Block::suspend_newton()).
+    bool newton = plasticity.newton;
+    for (const auto &block : blocks)
+      block->suspend_newton(false);
     for (;;)
       {
-        if (plasticity.newton)
-          update_tangent_stiffness();
         // Newton: the contact states of the last pass start the next.
-        solve_pass(k,
-                   time,
-                   iterations,
-                   reference_iterations,
-                   plasticity.newton && plastic_iterations > 0);
+        const bool from_last_solve =
+          plasticity.newton && plastic_iterations > 0;
+        if (newton)
+          try
+            {
+              update_tangent_stiffness();
+              solve_pass(
+                k, time, iterations, reference_iterations, from_last_solve);
+            }
+          catch (const ExceptionBase &e)
+            {
+              // The tangent of perfect plasticity is singular along the
+              // flow; with slipping pairs around a yielded band the
+              // condensed system can be too, while the elastic one is not.
+              bool suspended = false;
+              for (const auto &block : blocks)
+                suspended = block->suspend_newton(true) || suspended;
+              if (!suspended)
+                throw;
+              newton = false;
+              ++newton_suspensions;
+              std::ostringstream message;
+              e.print_info(message);
+              std::string reason = message.str();
+              reason = reason.substr(reason.find_first_not_of(" \n"));
+              reason = reason.substr(0, reason.find('\n'));
+              if (!parameters.run.test_mode)
+                pcout << "    Newton iteration " << plastic_iterations + 1
+                      << ": no solution with the tangent stiffness (" << reason
+                      << "); the rest of the step uses the elastic stiffness "
+                      << "(initial-stress method)\n";
+              update_tangent_stiffness();
+              solve_pass(
+                k, time, iterations, reference_iterations, from_last_solve);
+            }
+        else
+          solve_pass(
+            k, time, iterations, reference_iterations, from_last_solve);
 
         if (!plasticity.enabled)
           break;
@@ -530,7 +570,7 @@ namespace mbfem
         previous_change = change;
         // Progress on long runs: a line every 100 iterations, or every
         // Newton iteration (few, each with new factorisations).
-        if (plasticity.newton && !parameters.run.test_mode)
+        if (newton && !parameters.run.test_mode)
           pcout << "    Newton iteration " << plastic_iterations
                 << ": residual " << std::scientific << std::setprecision(3)
                 << change << std::defaultfloat << ", "
@@ -563,7 +603,7 @@ namespace mbfem
         // Aitken's relaxation of the fixed point x = F(x): omega from
         // the last two residuals (plain steps converge at a rate near 1
         // once the plastic zone is large, e.g. with dilatancy).
-        if (plasticity.newton)
+        if (newton)
           continue; // the new tangent goes in before the next pass
         omega = (!plasticity.aitken || plastic_iterations == 1 ||
                      plastic_update.aitken_denominator <= 0. ?

@@ -157,6 +157,19 @@ namespace mbfem
     bool
     tangent_changed() const;
 
+    /**
+     * Newton's method: with a perfectly plastic tangent, yielded rock and
+     * slipping pairs can form a mechanism, and the tangent system is
+     * singular although the elastic one is not. @p suspend = true puts the
+     * elastic stiffness back and makes update_plastic_strain() do
+     * initial-stress iterations for the rest of the step; false (at the
+     * start of every step) resumes Newton. Returns whether the stiffness
+     * last assembled had a plastic tangent, i.e. whether suspending changes
+     * anything.
+     */
+    bool
+    suspend_newton(const bool suspend);
+
     /** Accepts the plastic strain of the converged increment. */
     void
     commit_plastic_strain();
@@ -392,6 +405,10 @@ namespace mbfem
     std::vector<SymmetricTensor<2, dim>> linearisation_strain;
     std::vector<SymmetricTensor<2, dim>> linearisation_stress;
     bool                                 tangent_is_stale = false;
+    /** Whether the stiffness last assembled used a plastic tangent. */
+    bool assembled_plastic_tangent = false;
+    /** Initial-stress iterations for the rest of the step (suspend_newton). */
+    bool newton_suspended = false;
     /** The Newton state at the last commit, for restore_plastic_state(). */
     std::vector<SymmetricTensor<4, dim>> tangent_committed;
     std::vector<bool>                    plastic_tangent_committed;

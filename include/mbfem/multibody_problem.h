@@ -148,6 +148,9 @@ namespace mbfem
     double condensed_seconds  = 0.;
     double monolithic_seconds = 0.;
 
+    /** Steps in which Newton gave way to the initial-stress method. */
+    unsigned int newton_suspensions = 0;
+
     /** Largest differences (relative) over the increments, "both". */
     double       largest_force_difference = 0.;
     double       largest_gap_difference   = 0.;
