@@ -262,34 +262,26 @@ namespace mbfem
             if (newton && !newton_suspended)
               {
                 update_newton_point(index, eps[q], trial, stress, JxW, result);
-                plastic_strain[index]      = updated;
                 plastic_strain_load[index] = updated;
-                result.norm2 += squared(updated) * JxW;
-                ++result.n_points;
-                if (yielded[index])
-                  {
-                    ++result.n_yielded;
-                    result.yielded_measure += JxW;
-                  }
-                result.max_equivalent =
-                  std::max(result.max_equivalent,
-                           std::sqrt(2. / 3. * squared(updated)));
-                continue;
               }
-            const SymmetricTensor<2, 3> residual =
-              updated - plastic_strain_load[index];
-            result.change2 += squared(residual) * JxW;
-            result.norm2 += squared(updated) * JxW;
-            if (have_previous_residual)
+            else
               {
-                const SymmetricTensor<2, 3> &previous =
-                  plastic_residual_previous[index];
-                result.aitken_numerator +=
-                  (previous * (residual - previous)) * JxW;
-                result.aitken_denominator += squared(residual - previous) * JxW;
+                const SymmetricTensor<2, 3> residual =
+                  updated - plastic_strain_load[index];
+                result.change2 += squared(residual) * JxW;
+                if (have_previous_residual)
+                  {
+                    const SymmetricTensor<2, 3> &previous =
+                      plastic_residual_previous[index];
+                    result.aitken_numerator +=
+                      (previous * (residual - previous)) * JxW;
+                    result.aitken_denominator +=
+                      squared(residual - previous) * JxW;
+                  }
+                plastic_residual[index] = residual;
               }
-            plastic_residual[index] = residual;
-            plastic_strain[index]   = updated;
+            plastic_strain[index] = updated;
+            result.norm2 += squared(updated) * JxW;
             ++result.n_points;
             if (yielded[index])
               {
