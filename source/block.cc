@@ -429,16 +429,17 @@ namespace mbfem
                                   std::vector<double> &equivalent_strain) const
   {
     const unsigned int n_cells = triangulation.n_active_cells();
-    stress.assign(n_cells, SymmetricTensor<2, 3>());
+    stress.clear();
     yielded_fraction.assign(n_cells, 0.);
     equivalent_strain.assign(n_cells, 0.);
     if (!mohr_coulomb)
       return;
     const unsigned int n_q = n_plastic_points();
+    stress.reserve(std::size_t(n_cells) * n_q);
     for (unsigned int c = 0; c < n_cells; ++c)
       for (unsigned int q = 0; q < n_q; ++q)
         {
-          stress[c] += plastic_stress(c, q) / n_q;
+          stress.push_back(plastic_stress(c, q));
           yielded_fraction[c] += (yielded[c * n_q + q] ? 1. : 0.) / n_q;
           equivalent_strain[c] =
             std::max(equivalent_strain[c],

@@ -1,5 +1,6 @@
 #include <mbfem/output.h>
 
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/data_out.h>
 
@@ -56,11 +57,82 @@ namespace mbfem
   StressPostprocessor<dim>::StressPostprocessor(
     const Material                           &material,
     const InSituStress                       *in_situ,
-    const std::vector<SymmetricTensor<2, 3>> &plastic_stress)
+    const std::vector<SymmetricTensor<2, 3>> &plastic_stress,
+    const Mapping<dim>                       *mapping,
+    const unsigned int                        degree)
     : material(material)
     , in_situ(in_situ != nullptr && in_situ->enabled ? in_situ : nullptr)
     , plastic_stress(plastic_stress)
-  {}
+    , mapping(mapping)
+  {
+    if (plastic_stress.empty())
+      return;
+    Assert(mapping != nullptr, ExcInternalError());
+    // Which 1D node each point of QGauss<dim> sits on in each direction,
+    // found from the coordinates, so that no ordering is assumed.
+    const QGauss<1>   gauss_1d(degree + 1);
+    const QGauss<dim> gauss(degree + 1);
+    for (const Point<1> &x : gauss_1d.get_points())
+      nodes.push_back(x[0]);
+    for (const Point<dim> &x : gauss.get_points())
+      {
+        std::array<unsigned int, dim> index;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            index[d] = 0;
+            for (unsigned int k = 1; k < nodes.size(); ++k)
+              if (std::abs(x[d] - nodes[k]) < std::abs(x[d] - nodes[index[d]]))
+                index[d] = k;
+          }
+        node_of_point.push_back(index);
+      }
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  StressPostprocessor<dim>::interpolated_plastic_stress(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const Point<dim>                                     &point) const
+  {
+    const unsigned int n_q   = node_of_point.size();
+    const std::size_t  first = cell->active_cell_index() * n_q;
+    Point<dim>         unit;
+    try
+      {
+        unit = mapping->transform_real_to_unit_cell(cell, point);
+      }
+    catch (const typename Mapping<dim>::ExcTransformationFailed &)
+      {
+        // (Not seen so far; the cell's mean is the safe answer.)
+        SymmetricTensor<2, 3> mean;
+        for (unsigned int q = 0; q < n_q; ++q)
+          mean += plastic_stress[first + q] / n_q;
+        return mean;
+      }
+    // Lagrange polynomials through the Gauss nodes, a product over the
+    // directions: exact at the Gauss points, degree p like the strain.
+    std::array<std::vector<double>, dim> lagrange;
+    for (unsigned int d = 0; d < dim; ++d)
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          double value = 1.;
+          for (unsigned int m = 0; m < nodes.size(); ++m)
+            if (m != k)
+              value *= (unit[d] - nodes[m]) / (nodes[k] - nodes[m]);
+          lagrange[d].push_back(value);
+        }
+    SymmetricTensor<2, 3> result;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        double weight = 1.;
+        for (unsigned int d = 0; d < dim; ++d)
+          weight *= lagrange[d][node_of_point[q][d]];
+        result += weight * plastic_stress[first + q];
+      }
+    return result;
+  }
 
 
 
@@ -79,8 +151,8 @@ namespace mbfem
         if (in_situ)
           sigma += in_situ->stress_3d(inputs.evaluation_points[p]);
         if (!plastic_stress.empty())
-          sigma -= plastic_stress[inputs.template get_cell<dim>()
-                                    ->active_cell_index()];
+          sigma -= interpolated_plastic_stress(inputs.template get_cell<dim>(),
+                                               inputs.evaluation_points[p]);
 
         unsigned int k = 0;
         for (unsigned int i = 0; i < dim; ++i)
@@ -131,8 +203,9 @@ namespace mbfem
   UpdateFlags
   StressPostprocessor<dim>::get_needed_update_flags() const
   {
-    return in_situ ? update_gradients | update_quadrature_points :
-                     update_gradients;
+    return in_situ || !plastic_stress.empty() ?
+             update_gradients | update_quadrature_points :
+             update_gradients;
   }
 
 
@@ -169,7 +242,9 @@ namespace mbfem
       plastic_stress.clear();
     const StressPostprocessor<dim> stress(block.material,
                                           block.get_in_situ_stress(),
-                                          plastic_stress);
+                                          plastic_stress,
+                                          &block.mapping,
+                                          block.fe.degree);
     data_out.add_data_vector(block.solution, stress);
     Vector<float> yielded_cells(yielded.begin(), yielded.end());
     Vector<float> plastic_cells(plastic_strain.begin(), plastic_strain.end());

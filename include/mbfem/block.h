@@ -182,8 +182,9 @@ namespace mbfem
     restore_plastic_state();
 
     /**
-     * Per active cell: the mean of D eps_p over its quadrature points (for
-     * the stresses at output points) and the fraction of them yielded.
+     * D eps_p at every quadrature point (cell-major, for the stresses at
+     * output points), and per active cell the fraction of its points
+     * yielded and the largest equivalent plastic strain.
      */
     void
     cell_plastic_fields(std::vector<SymmetricTensor<2, 3>> &plastic_stress,
