@@ -182,14 +182,11 @@ namespace mbfem
     if (newton)
       {
         elastic_tangent = mohr_coulomb->elastic_tangent<dim>();
-        tangent.assign(n, elastic_tangent);
-        plastic_tangent.assign(n, false);
-        linearisation_strain.assign(n, SymmetricTensor<2, dim>());
-        linearisation_stress.assign(n, SymmetricTensor<2, dim>());
-        tangent_committed              = tangent;
-        plastic_tangent_committed      = plastic_tangent;
-        linearisation_strain_committed = linearisation_strain;
-        linearisation_stress_committed = linearisation_stress;
+        linearisation.tangent.assign(n, elastic_tangent);
+        linearisation.plastic.assign(n, false);
+        linearisation.strain.assign(n, SymmetricTensor<2, dim>());
+        linearisation.stress.assign(n, SymmetricTensor<2, dim>());
+        linearisation_committed = linearisation;
       }
   }
 
@@ -318,22 +315,23 @@ namespace mbfem
     // at u_j predicted (an elastic tangent predicts the trial stress), in
     // strain units like the initial-stress residual. A point elastic at
     // both u_j and u_{j+1} has none.
-    if (plastic_tangent[index] || yielded[index])
+    if (linearisation.plastic[index] || yielded[index])
       {
         const SymmetricTensor<2, dim> predicted =
-          plastic_tangent[index] ?
-            linearisation_stress[index] +
-              tangent[index] * (strain - linearisation_strain[index]) :
+          linearisation.plastic[index] ?
+            linearisation.stress[index] +
+              linearisation.tangent[index] *
+                (strain - linearisation.strain[index]) :
             trial_in_plane;
         result.change2 += squared(returned - predicted) /
                           Utilities::fixed_power<2>(2. * material.mu()) * JxW;
         tangent_is_stale = true;
       }
-    tangent[index] =
+    linearisation.tangent[index] =
       yielded[index] ? mohr_coulomb->tangent<dim>(trial) : elastic_tangent;
-    plastic_tangent[index]      = yielded[index];
-    linearisation_strain[index] = strain;
-    linearisation_stress[index] = returned;
+    linearisation.plastic[index] = yielded[index];
+    linearisation.strain[index]  = strain;
+    linearisation.stress[index]  = returned;
   }
 
 
@@ -359,11 +357,11 @@ namespace mbfem
     // The elastic tangent everywhere: the load then carries D eps_p alone,
     // as in the initial-stress method, and the residual below is measured
     // as there (the change of the plastic strain).
-    for (std::size_t i = 0; i < tangent.size(); ++i)
-      if (plastic_tangent[i])
+    for (std::size_t i = 0; i < linearisation.tangent.size(); ++i)
+      if (linearisation.plastic[i])
         {
-          tangent[i]         = elastic_tangent;
-          plastic_tangent[i] = false;
+          linearisation.tangent[i] = elastic_tangent;
+          linearisation.plastic[i] = false;
         }
     tangent_is_stale = assembled_plastic_tangent;
     return assembled_plastic_tangent;
@@ -391,12 +389,7 @@ namespace mbfem
     plastic_strain_load      = plastic_strain;
     have_previous_residual   = false;
     if (newton)
-      {
-        tangent_committed              = tangent;
-        plastic_tangent_committed      = plastic_tangent;
-        linearisation_strain_committed = linearisation_strain;
-        linearisation_stress_committed = linearisation_stress;
-      }
+      linearisation_committed = linearisation;
   }
 
 
@@ -412,11 +405,8 @@ namespace mbfem
     have_previous_residual = false;
     if (newton)
       {
-        tangent              = tangent_committed;
-        plastic_tangent      = plastic_tangent_committed;
-        linearisation_strain = linearisation_strain_committed;
-        linearisation_stress = linearisation_stress_committed;
-        tangent_is_stale     = true;
+        linearisation    = linearisation_committed;
+        tangent_is_stale = true;
       }
   }
 
@@ -606,7 +596,8 @@ namespace mbfem
         const unsigned int n_q = fe_values.n_quadrature_points;
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
-            const SymmetricTensor<4, dim> &C = tangent[cell_index * n_q + q];
+            const SymmetricTensor<4, dim> &C =
+              linearisation.tangent[cell_index * n_q + q];
             for (unsigned int i = 0; i < n; ++i)
               eps[i] = fe_values[displacement].symmetric_gradient(i, q);
             const double JxW = fe_values.JxW(q);
@@ -673,9 +664,9 @@ namespace mbfem
     stiffness.compress(VectorOperation::add);
     tangent_is_stale = false;
     assembled_plastic_tangent =
-      newton &&
-      std::find(plastic_tangent.begin(), plastic_tangent.end(), true) !=
-        plastic_tangent.end();
+      newton && std::find(linearisation.plastic.begin(),
+                          linearisation.plastic.end(),
+                          true) != linearisation.plastic.end();
   }
 
 
@@ -818,9 +809,9 @@ namespace mbfem
                   {
                     const std::size_t index =
                       cell->active_cell_index() * n_plastic_points() + q;
-                    if (plastic_tangent[index])
-                      s += (tangent[index] - elastic_tangent) *
-                           linearisation_strain[index];
+                    if (linearisation.plastic[index])
+                      s += (linearisation.tangent[index] - elastic_tangent) *
+                           linearisation.strain[index];
                   }
                 for (unsigned int i = 0; i < n; ++i)
                   cell_load(i) +=

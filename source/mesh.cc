@@ -261,7 +261,6 @@ namespace mbfem
     SubCellData                          faces;
     std::set<unsigned int>               interior_faces;
 
-
     const auto number = [&](const unsigned int global) {
       const auto [it, inserted] =
         vertex_number.emplace(global, vertices.size());

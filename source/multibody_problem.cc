@@ -13,6 +13,21 @@
 
 namespace mbfem
 {
+  namespace
+  {
+    /** The text of a deal.II exception, without its leading blank lines. */
+    std::string
+    message_of(const ExceptionBase &e)
+    {
+      std::ostringstream message;
+      e.print_info(message);
+      const std::string text = message.str();
+      return text.substr(text.find_first_not_of(" \n"));
+    }
+  } // namespace
+
+
+
   template <int dim>
   MultiBodyProblem<dim>::MultiBodyProblem(Parameters<dim>    &parameters,
                                           ConditionalOStream &pcout)
@@ -282,10 +297,7 @@ namespace mbfem
               {
                 if (history.max_halvings == 0)
                   throw;
-                std::ostringstream message;
-                e.print_info(message);
-                std::string reason = message.str();
-                reason = reason.substr(reason.find_first_not_of(" \n"));
+                const std::string reason = message_of(e);
                 AssertThrow(halvings < history.max_halvings,
                             ExcMessage(
                               reason +
@@ -298,12 +310,12 @@ namespace mbfem
                               parameters.output.directory + "."));
                 for (const auto &block : blocks)
                   block->restore_plastic_state();
-                reason = reason.substr(0, reason.find('\n'));
                 ++halvings;
                 step = (target - reached) / 2.;
-                pcout << "    step to t = " << target << " failed (" << reason
-                      << "); halving " << halvings << " of "
-                      << history.max_halvings << ": steps of " << step << "\n";
+                pcout << "    step to t = " << target << " failed ("
+                      << reason.substr(0, reason.find('\n')) << "); halving "
+                      << halvings << " of " << history.max_halvings
+                      << ": steps of " << step << "\n";
                 continue;
               }
             reached = target;
@@ -514,12 +526,14 @@ namespace mbfem
         // Newton: the contact states of the last pass start the next.
         const bool from_last_solve =
           plasticity.newton && plastic_iterations > 0;
+        bool solved = false;
         if (newton)
           try
             {
               update_tangent_stiffness();
               solve_pass(
                 k, time, iterations, reference_iterations, from_last_solve);
+              solved = true;
             }
           catch (const ExceptionBase &e)
             {
@@ -533,23 +547,21 @@ namespace mbfem
                 throw;
               newton = false;
               ++newton_suspensions;
-              std::ostringstream message;
-              e.print_info(message);
-              std::string reason = message.str();
-              reason = reason.substr(reason.find_first_not_of(" \n"));
-              reason = reason.substr(0, reason.find('\n'));
+              const std::string reason = message_of(e);
               if (!parameters.run.test_mode)
                 pcout << "    Newton iteration " << plastic_iterations + 1
-                      << ": no solution with the tangent stiffness (" << reason
+                      << ": no solution with the tangent stiffness ("
+                      << reason.substr(0, reason.find('\n'))
                       << "); the rest of the step uses the elastic stiffness "
                       << "(initial-stress method)\n";
-              update_tangent_stiffness();
-              solve_pass(
-                k, time, iterations, reference_iterations, from_last_solve);
             }
-        else
-          solve_pass(
-            k, time, iterations, reference_iterations, from_last_solve);
+        if (!solved)
+          {
+            // (Reassembles only after a suspension: the elastic stiffness.)
+            update_tangent_stiffness();
+            solve_pass(
+              k, time, iterations, reference_iterations, from_last_solve);
+          }
 
         if (!plasticity.enabled)
           break;

@@ -238,8 +238,6 @@ namespace mbfem
     std::vector<SymmetricTensor<2, 3>> plastic_stress;
     std::vector<double>                yielded, plastic_strain;
     block.cell_plastic_fields(plastic_stress, yielded, plastic_strain);
-    if (!block.is_plastic())
-      plastic_stress.clear();
     const StressPostprocessor<dim> stress(block.material,
                                           block.get_in_situ_stress(),
                                           plastic_stress,

@@ -393,30 +393,32 @@ namespace mbfem
     bool                               have_previous_residual = false;
     std::vector<bool>                  yielded;
     /**
-     * Newton's method: the consistent tangent at every plastic point, and
-     * the strain and (in-plane) stress it was taken at, the linearisation
-     * point u_j. The load then carries int B^T (C_t - D) eps(u_j), so that
-     * the block's solve is K_t u_{j+1} = f - f_int(u_j) + K_t u_j and keeps
-     * the form (and the contact flexibility) of the elastic one.
+     * Newton's method: at every point of the plastic state the consistent
+     * tangent, whether it is a plastic one, and the strain and (in-plane)
+     * stress it was taken at, the linearisation point u_j. The load then
+     * carries int B^T (C_t - D) eps(u_j), so that the block's solve is
+     * K_t u_{j+1} = f - f_int(u_j) + K_t u_j and keeps the form (and the
+     * contact flexibility) of the elastic one.
      */
-    bool                                 newton = false;
-    SymmetricTensor<4, dim>              elastic_tangent;
-    std::vector<SymmetricTensor<4, dim>> tangent;
-    std::vector<bool>                    plastic_tangent;
-    std::vector<SymmetricTensor<2, dim>> linearisation_strain;
-    std::vector<SymmetricTensor<2, dim>> linearisation_stress;
-    bool                                 tangent_is_stale = false;
+    struct Linearisation
+    {
+      std::vector<SymmetricTensor<4, dim>> tangent;
+      std::vector<bool>                    plastic;
+      std::vector<SymmetricTensor<2, dim>> strain;
+      std::vector<SymmetricTensor<2, dim>> stress;
+    };
+    bool                    newton = false;
+    SymmetricTensor<4, dim> elastic_tangent;
+    Linearisation           linearisation;
+    /** The linearisation at the last commit, for restore_plastic_state(). */
+    Linearisation linearisation_committed;
+    bool          tangent_is_stale = false;
     /** Whether the stiffness last assembled used a plastic tangent. */
     bool assembled_plastic_tangent = false;
     /** Initial-stress iterations for the rest of the step (suspend_newton). */
-    bool newton_suspended = false;
-    /** The Newton state at the last commit, for restore_plastic_state(). */
-    std::vector<SymmetricTensor<4, dim>> tangent_committed;
-    std::vector<bool>                    plastic_tangent_committed;
-    std::vector<SymmetricTensor<2, dim>> linearisation_strain_committed;
-    std::vector<SymmetricTensor<2, dim>> linearisation_stress_committed;
-    const InSituStress                  *in_situ    = nullptr;
-    const Excavation                    *excavation = nullptr;
+    bool                                 newton_suspended = false;
+    const InSituStress                  *in_situ          = nullptr;
+    const Excavation                    *excavation       = nullptr;
     AffineConstraints<double>            physical_constraints;
     AffineConstraints<double>            constraints;
     AffineConstraints<double>            homogeneous_constraints;

@@ -53,11 +53,6 @@ namespace mbfem
     setup_blocks();
 
     /**
-     * One pass through increment @p k: every block's load and (condensed)
-     * its response to it, the contact iteration (and the monolithic
-     * reference), the fields. Repeated while the plastic strain settles.
-     */
-    /**
      * Solves increment @p k up to pseudo-time @p time from the committed
      * state: one pass for elastic blocks, repeated passes until the plastic
      * strain settles for plastic ones. Returns the number of plastic
@@ -79,6 +74,11 @@ namespace mbfem
     void
     update_tangent_stiffness();
 
+    /**
+     * One pass through increment @p k: every block's load and (condensed)
+     * its response to it, the contact iteration (and the monolithic
+     * reference), the fields. Repeated while the plastic strain settles.
+     */
     void
     solve_pass(const unsigned int k,
                const double       time,
