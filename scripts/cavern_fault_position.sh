@@ -31,18 +31,19 @@ PRM
     /usr/bin/time -f "%e" -o "$out/$name.time" "$mbfem" "$out/$name.prm" > "$out/$name.log" 2>&1
     status=$?
     last=$(ls "$out/$name"-pairs-*.csv | sort | tail -1)
-    /usr/bin/python3 - "$last" "$yw" "$base" "$status" "$(tail -1 "$out/$name.time")" <<'PY'
-import csv, re, sys
-path, yw, base, status, seconds = sys.argv[1:]
+    /usr/bin/python3 - "$root/scripts" "$last" "$yw" "$base" "$status" "$(tail -1 "$out/$name.time")" <<'PY'
+import csv, sys
+sys.path.insert(0, sys.argv[1])
+from cavern_slip_curves import left_wall_slip
+path, yw, base, status, seconds = sys.argv[2:]
+t, wall_slip, _ = left_wall_slip(path)
 with open(path) as f:
-    t = float(re.search(r"t = ([0-9.eE+-]+)", f.readline()).group(1))
-    rows = list(csv.DictReader(f))
-wall = max((r for r in rows if float(r["x"]) < -15), key=lambda r: float(r["x"]))
-largest = max(rows, key=lambda r: abs(float(r["slip_1"])))
+    f.readline()
+    largest = max(csv.DictReader(f), key=lambda r: abs(float(r["slip_1"])))
 print("fault %4.0f m above the floor, %-9s: t = %.2f%s, left-wall slip %5.1f mm, "
       "largest slip %5.1f mm at x = %5.1f m, %s s"
       % (float(yw) + 30, "elastic" if base == "cavern_fault" else "plastic", t,
-         "" if status == "0" else " (failed after)", 1e3 * abs(float(wall["slip_1"])),
+         "" if status == "0" else " (failed after)", wall_slip,
          1e3 * abs(float(largest["slip_1"])), float(largest["x"]), seconds))
 PY
   done
