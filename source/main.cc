@@ -4,9 +4,9 @@
 //   mbfem FILE.prm              run the file (.prm or .json)
 //   mbfem --print-parameters    every parameter with documentation
 
-#include <mbfem/multibody_problem.h>
-#include <mbfem/order_study.h>
-#include <mbfem/parameters.h>
+#include <mbfem/analysis/multibody_problem.h>
+#include <mbfem/analysis/order_study.h>
+#include <mbfem/base/parameters.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>

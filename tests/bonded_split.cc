@@ -8,8 +8,8 @@
 // support point and the stress at every cell centre agree to 1e-8 relative
 // (measured when written: 1.1e-12 for both, round-off).
 
-#include <mbfem/multibody_problem.h>
-#include <mbfem/parameters.h>
+#include <mbfem/analysis/multibody_problem.h>
+#include <mbfem/base/parameters.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/numerics/fe_field_function.h>

@@ -3,7 +3,7 @@
 // the multi-body method is computed that way), and agree with the
 // stiffness: ||K x - b|| / ||b|| at round-off.
 
-#include <mbfem/direct_solver.h>
+#include <mbfem/linear_algebra/direct_solver.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>

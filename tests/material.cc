@@ -2,7 +2,7 @@
 // Lame constants, the plane-strain sigma_zz, principal stresses sorted with
 // tension positive, and von Mises for uniaxial stress and pure shear.
 
-#include <mbfem/material.h>
+#include <mbfem/material/material.h>
 
 #include <cstdio>
 #include <iostream>

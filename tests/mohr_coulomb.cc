@@ -15,7 +15,7 @@
 // The counts of returns to the plane, an edge and the apex are printed:
 // all three kinds must be exercised.
 
-#include <mbfem/plasticity.h>
+#include <mbfem/material/plasticity.h>
 
 #include <cmath>
 #include <cstdio>

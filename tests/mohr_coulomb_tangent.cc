@@ -12,7 +12,7 @@
 // - the 2D (plane strain) tangent is the in-plane block of the 3D one;
 // - elastic_tangent() is D (C : eps = lambda tr(eps) 1 + 2 mu eps).
 
-#include <mbfem/plasticity.h>
+#include <mbfem/material/plasticity.h>
 
 #include <algorithm>
 #include <cmath>

@@ -4,8 +4,8 @@
 // by hand. Boundary ids of the colorized hyper_cube: 0/1 at x = 0/1,
 // 2/3 at y = 0/1, 4/5 at z = 0/1.
 
-#include <mbfem/block.h>
-#include <mbfem/boundary_conditions.h>
+#include <mbfem/block/block.h>
+#include <mbfem/block/boundary_conditions.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>

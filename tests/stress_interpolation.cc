@@ -6,8 +6,8 @@
 // bends (a quarter of a ring). An ordering mistake between the Gauss points
 // and the Lagrange nodes, or a wrong real-to-unit map, breaks it.
 
-#include <mbfem/material.h>
-#include <mbfem/output.h>
+#include <mbfem/material/material.h>
+#include <mbfem/output/output.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>

@@ -1,0 +1,41 @@
+#ifndef mbfem_analysis_load_history_h
+#define mbfem_analysis_load_history_h
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /**
+   * Pseudo-time of the quasi-static load path. Loads and prescribed
+   * displacements are functions of t; t runs from 0 to "End time" in equal
+   * increments. With friction the answer depends on the path (paper,
+   * eq. 15), so the increments are part of the model, not of the solver.
+   */
+  struct LoadHistory
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Pseudo-time at the end of increment @p k (k = 1..n_increments). */
+    double
+    time(const unsigned int k) const;
+
+    unsigned int n_increments = 1;
+    double       end_time     = 1.;
+    /**
+     * How often an increment that fails (its contact states cycle, or its
+     * plastic iteration does not converge) may be retried in steps of half
+     * the size, each step committed as if it were an increment (friction
+     * and plasticity follow the finer path); results are written at the
+     * increments only.
+     */
+    unsigned int max_halvings = 0;
+  };
+} // namespace mbfem
+
+#endif

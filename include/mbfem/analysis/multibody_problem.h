@@ -1,0 +1,191 @@
+#ifndef mbfem_analysis_multibody_problem_h
+#define mbfem_analysis_multibody_problem_h
+
+#include <mbfem/block/block.h>
+#include <mbfem/contact/contact_solver.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  template <int dim>
+  struct Parameters;
+
+  /**
+   * The multi-body finite element method from mesh to results: the mesh is
+   * split into blocks (one per material id), each block is factorised once,
+   * contact pairs are found on the declared interfaces, the blocks' contact
+   * flexibilities are computed by unit loads, and the load history is
+   * followed increment by increment (external response of every block,
+   * contact-state iteration, field recovery, output). A mesh with one held
+   * block and no interface is the plain elastic problem.
+   */
+  template <int dim>
+  class MultiBodyProblem
+  {
+  public:
+    MultiBodyProblem(Parameters<dim> &parameters, ConditionalOStream &pcout);
+
+    void
+    run();
+
+    /** The blocks with their final fields (after run()). */
+    const std::vector<std::unique_ptr<Block<dim>>> &
+    get_blocks() const;
+
+    /** The contact solver, or nullptr without interfaces. */
+    const ContactSolver<dim> *
+    get_contact() const;
+
+  private:
+    void
+    make_blocks();
+
+    void
+    setup_blocks();
+
+    /**
+     * Solves increment @p k up to pseudo-time @p time from the committed
+     * state: one pass for elastic blocks, repeated passes until the plastic
+     * strain settles for plastic ones. Returns the number of plastic
+     * iterations; throws if the contact states or the plastic iteration
+     * do not converge.
+     */
+    unsigned int
+    solve_step(const unsigned int k,
+               const double       time,
+               unsigned int      &iterations,
+               unsigned int      &reference_iterations,
+               PlasticUpdate     &plastic_update);
+
+    /**
+     * Increment @p k, retried in halved steps if it fails and
+     * 'Load history/Maximum step halvings' allows; returns the plastic
+     * iterations of its last step.
+     */
+    unsigned int
+    solve_increment(const unsigned int k,
+                    unsigned int      &iterations,
+                    unsigned int      &reference_iterations,
+                    PlasticUpdate     &plastic_update);
+
+    /** Accepts a step short of the increment's end as converged. */
+    void
+    commit_step();
+
+    /**
+     * Newton failed on @p failure: puts the elastic stiffness back for the
+     * rest of the step (returns false, Newton off) or, if the stiffness
+     * was elastic already, rethrows.
+     */
+    bool
+    give_way_to_initial_stress(const ExceptionBase &failure,
+                               const unsigned int   plastic_iterations);
+
+    /**
+     * Newton's method for plastic blocks: reassembles and refactorises every
+     * block whose tangent changed, and then recomputes the contact
+     * flexibilities.
+     */
+    void
+    update_tangent_stiffness();
+
+    /**
+     * One pass through increment @p k: every block's load and (condensed)
+     * its response to it, the contact iteration (and the monolithic
+     * reference), the fields. Repeated while the plastic strain settles.
+     */
+    void
+    solve_pass(const unsigned int k,
+               const double       time,
+               unsigned int      &iterations,
+               unsigned int      &reference_iterations,
+               const bool         from_last_solve = false);
+
+    void
+    print_increment(const unsigned int k,
+                    const double       time,
+                    const unsigned int iterations) const;
+
+    void
+    print_errors(const double time) const;
+
+    /**
+     * Per interface: largest tractions, the extent of the closed and the
+     * stuck pairs (2D: along x), and errors against Contact/Exact traction.
+     */
+    void
+    print_interface_summary() const;
+
+    /** The pairs as CSV and as a VTU point set, for this increment. */
+    std::string
+    write_pairs(const unsigned int k, const double time) const;
+
+    /**
+     * Formulation "both": the monolithic reference against the condensed
+     * solve of this increment, pair by pair; prints and records it.
+     */
+    void
+    compare_formulations();
+
+    /**
+     * A relative difference for the screen; in test mode, round-off (below
+     * 1e-9), whose digits vary by machine, as "below 1e-9".
+     */
+    std::string
+    format_difference(const double e) const;
+
+    /** One line per increment in <base>-summary.csv (rewritten whole). */
+    void
+    write_summary(const unsigned int k,
+                  const double       time,
+                  const unsigned int iterations,
+                  const unsigned int reference_iterations);
+
+    /** Largest tangential relative displacement over the pairs. */
+    static double
+    max_slip(const ContactSolver<dim> &solver);
+
+    Parameters<dim>                         &parameters;
+    ConditionalOStream                      &pcout;
+    TimerOutput                              timer;
+    std::vector<std::unique_ptr<Block<dim>>> blocks;
+    std::unique_ptr<ContactSolver<dim>>      contact;
+    /** Formulation "both": the monolithic solve beside the condensed one. */
+    std::unique_ptr<ContactSolver<dim>> reference;
+
+    /**
+     * Wall time of the work of each formulation alone (not the mesh, the
+     * load vectors or the output, which both share): condensed = block
+     * factorisation, flexibilities, load responses, contact iterations,
+     * field recovery; monolithic = its assembly and contact iterations
+     * (one sparse LU each) and field recovery.
+     */
+    double condensed_seconds  = 0.;
+    double monolithic_seconds = 0.;
+
+    /** Steps in which Newton gave way to the initial-stress method. */
+    unsigned int newton_suspensions = 0;
+
+    /** Largest differences (relative) over the increments, "both". */
+    double       largest_force_difference = 0.;
+    double       largest_gap_difference   = 0.;
+    double       largest_slip_difference  = 0.;
+    unsigned int state_differences        = 0;
+    /** What this increment's comparison found, for the summary CSV. */
+    std::array<double, 4> last_comparison        = {{0., 0., 0., 0.}};
+    double                last_contact_seconds   = 0.;
+    double                last_reference_seconds = 0.;
+    std::string           summary_csv;
+  };
+} // namespace mbfem
+
+#endif

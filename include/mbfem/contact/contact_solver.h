@@ -1,0 +1,258 @@
+#ifndef mbfem_contact_contact_solver_h
+#define mbfem_contact_contact_solver_h
+
+#include <mbfem/block/block.h>
+#include <mbfem/contact/monolithic_system.h>
+#include <mbfem/interface/contact_interface.h>
+#include <mbfem/interface/pair_equation.h>
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /** The contact states of the paper's Table 1. */
+  enum class ContactState : unsigned char
+  {
+    stick,
+    slip,
+    open
+  };
+
+  std::string
+  to_string(const ContactState state);
+
+  /**
+   * How the interface system is solved: condensed to the contact DoFs
+   * through the blocks' flexibilities (the multi-body method), or as one
+   * monolithic Lagrange-multiplier system of all blocks (the reference).
+   */
+  enum class ContactFormulation : unsigned char
+  {
+    condensed,
+    monolithic
+  };
+
+  std::string
+  to_string(const ContactFormulation formulation);
+
+  /**
+   * The interface system of the multi-body method (paper eqs. 7-10, 15 and
+   * Table 1), generalised to any number of blocks and to 3D.
+   *
+   * With r_k the force of pair k on its block b (and -r_k on block a), the
+   * relative displacement of the pairs is
+   *
+   *   d = C_a r + Delta_F + P alpha,
+   *
+   * C_a assembled from the blocks' contact flexibilities, Delta_F the
+   * relative displacement under the external loads alone, and alpha the
+   * amplitudes of the floating blocks' free modes, whose equilibrium closes
+   * the system: P^T r = -F_e. Everything is written in each pair's frame
+   * (normal, tangents). Each state gives its equations (stick: no normal
+   * gap, no tangential increment; slip: no normal gap, |r_T| = c A + mu r_N
+   * against the slip; open: r = 0); the states are iterated within a load
+   * increment until every pair satisfies its check.
+   *
+   * With ContactFormulation::monolithic the same state iteration runs on
+   * the same PairEquation rows, but d comes from a monolithic
+   * Lagrange-multiplier system of all blocks (MonolithicSystem) instead of
+   * C_a and P: a second road to the same discrete solution.
+   */
+  template <int dim>
+  class ContactSolver
+  {
+  public:
+    ContactSolver(
+      std::vector<ContactPair<dim>> pairs,
+      const unsigned int            max_iterations,
+      const ContactFormulation      formulation = ContactFormulation::condensed,
+      const std::string            &solver_package = "Amesos_Klu");
+
+    /**
+     * Condensed: the dense flexibility C_a and coupling P, from every
+     * block's factorisation. Monolithic: the system of all blocks (which
+     * must have had assemble_load() once); no block is factorised.
+     */
+    void
+    setup(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
+
+    ContactFormulation
+    formulation() const;
+
+    /**
+     * Solves one load increment. Each block must have the load of this
+     * increment (assemble_load()); condensed, its solution must hold its
+     * response u_F to that load. Returns the number of
+     * state iterations; throws with a message naming blocks or pairs when
+     * the increment has no consistent solution. The state iteration starts
+     * from the committed states, or with @p from_last_solve from those of
+     * the last solve of this increment (Newton's passes, whose linear
+     * problems differ little from one to the next).
+     */
+    unsigned int
+    solve_increment(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+                    const unsigned int                              increment,
+                    const bool from_last_solve = false);
+
+    /** Accepts the converged increment as the start of the next one. */
+    void
+    commit();
+
+    /** Contact forces on block @p b as (DoF, force) lists. */
+    void
+    forces_on_block(const unsigned int                    b,
+                    std::vector<types::global_dof_index> &dofs,
+                    std::vector<double>                  &forces) const;
+
+    /** Amplitudes of block @p b's floating modes (condensed). */
+    std::vector<double>
+    floating_amplitudes(const unsigned int b) const;
+
+    /** Monolithic: block @p b's displacement from the converged solve. */
+    void
+    block_solution(const unsigned int b,
+                   const Block<dim>  &block,
+                   Vector<double>    &solution) const;
+
+    const std::vector<ContactPair<dim>> &
+    pairs() const;
+
+    /** Force on block b of pair k in its frame: (r_N, r_T...). */
+    Tensor<1, dim>
+    local_force(const unsigned int k) const;
+
+    /** Force on block b of pair k in global components. */
+    Tensor<1, dim>
+    force(const unsigned int k) const;
+
+    /** Normal gap g0 + d.n (>= 0). */
+    double
+    gap(const unsigned int k) const;
+
+    /** Tangential relative displacement (accumulated slip) in the frame. */
+    Tensor<1, dim>
+    slip(const unsigned int k) const;
+
+    ContactState
+    state(const unsigned int k) const;
+
+    bool
+    broken(const unsigned int k) const;
+
+    /**
+     * 3D: the largest angle (degrees) between a slipping pair's friction
+     * direction and its slip in the increment just solved (before
+     * commit()), over pairs slipping at least 1 % of the most. The
+     * direction is solved for (Newton on the slip law), so this is 0 up to
+     * the iteration's tolerance: a check, printed every increment. 0 in 2D.
+     */
+    double
+    misalignment() const;
+
+    /** Count of pairs in @p state. */
+    unsigned int
+    count(const ContactState state) const;
+
+  private:
+    struct Trial
+    {
+      std::vector<ContactState>   state;
+      std::vector<bool>           broken;
+      std::vector<bool>           tensile_slip;   // slip with r_N < 0: no mu
+      std::vector<Tensor<1, dim>> slip_direction; // local, tangential
+      /**
+       * 3D: (c A + mu r_N) / |slip increment| at the last iterate, the
+       * weight of the linearised slip direction; 0 holds it fixed.
+       */
+      std::vector<double> direction_stiffness;
+    };
+
+    /** The rows (Table 1) of every pair direction for @p trial. */
+    std::vector<PairEquation<dim>>
+    pair_equations(const Trial &trial) const;
+
+    /**
+     * Solves the system of @p trial: the forces rho (condensed: then the
+     * alphas) into @p solution, and d in the pairs' frames.
+     */
+    bool
+    solve_trial(const Trial    &trial,
+                Vector<double> &solution,
+                Vector<double> &displacement);
+
+    /** The condensed system: rho and alpha from C_hat, P_hat. */
+    bool
+    solve_condensed(const std::vector<PairEquation<dim>> &equations,
+                    Vector<double>                       &solution) const;
+
+    /** Checks every pair; returns the new trial and violations. */
+    Trial
+    check(const Trial          &trial,
+          const Vector<double> &solution,
+          const Vector<double> &displacement,
+          std::vector<double>  &violation,
+          double               &direction_change) const;
+
+    /**
+     * d = Delta_F + C_hat rho + P_hat alpha in the pairs' frames, for the
+     * solution (rho, alpha) of a trial.
+     */
+    Vector<double>
+    relative_displacement(const Vector<double> &solution) const;
+
+    /**
+     * Which floating blocks the pairs of @p trial cannot hold, and in which
+     * modes; empty if every block is held.
+     */
+    std::string
+    unheld_blocks(const Trial &trial) const;
+
+    /** Message for a singular system: which block is not held. */
+    std::string
+    diagnose_singular(const Trial &trial) const;
+
+    std::string
+    signature(const Trial &trial) const;
+
+    const std::vector<ContactPair<dim>>    contact_pairs;
+    const unsigned int                     max_iterations;
+    const unsigned int                     n_pairs;
+    const ContactFormulation               contact_formulation;
+    std::unique_ptr<MonolithicSystem<dim>> monolithic;
+
+    /** Blocks' floating modes: offset of each block's alphas, and count. */
+    std::vector<unsigned int>                alpha_offset;
+    std::vector<unsigned int>                n_alpha;
+    unsigned int                             n_alpha_total = 0;
+    std::vector<std::string>                 block_names;
+    std::vector<std::vector<Vector<double>>> mode_coefficients;
+
+    /** In the pairs' frames: C_hat = R C_a R^T, P_hat = R P. */
+    FullMatrix<double> flexibility;
+    FullMatrix<double> coupling;
+    /** Mean diagonal of flexibility: scales the forces in the system. */
+    double flexibility_scale = 1.;
+    /** Directions in which both nodes are held by supports. */
+    std::vector<std::array<bool, dim>> held;
+
+    /** Data of the current increment. */
+    Vector<double>      external_displacement; // R Delta_F (condensed)
+    std::vector<double> external_resultant;    // F_e, per alpha
+
+    /** Converged state and the solution of the current increment. */
+    Trial                       committed;
+    std::vector<Tensor<1, dim>> committed_displacement; // local d
+    Trial                       current;
+    Vector<double>              current_solution;
+    std::vector<Tensor<1, dim>> current_displacement;
+  };
+} // namespace mbfem
+
+#endif

@@ -1,0 +1,164 @@
+#ifndef mbfem_interface_contact_interface_h
+#define mbfem_interface_contact_interface_h
+
+#include <mbfem/block/block.h>
+#include <mbfem/interface/joint_law.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /** One contact interface as declared in subsection "Contact". */
+  struct InterfaceDeclaration
+  {
+    /** "blocks 1:2" (the faces the two blocks share in the mesh) or
+     * "boundaries 3:4" (faces with these boundary ids). */
+    bool         by_blocks = true;
+    unsigned int side_a    = 0;
+    unsigned int side_b    = 0;
+    JointLaw     joint;
+    std::string  description;
+  };
+
+  /** Subsection "Contact": the interfaces and their Mohr-Coulomb data. */
+  struct ContactParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    std::vector<InterfaceDeclaration> interfaces;
+    double                            search_distance = 0.;
+    unsigned int                      max_iterations  = 100;
+    /** Which formulations run (see the entry's text). */
+    enum class Formulation : unsigned char
+    {
+      condensed,
+      monolithic,
+      both
+    };
+    Formulation formulation = Formulation::condensed;
+
+    /** Whether the condensed (multi-body) formulation runs. */
+    bool
+    runs_condensed() const
+    {
+      return formulation != Formulation::monolithic;
+    }
+
+    /** Whether the monolithic reference runs. */
+    bool
+    runs_monolithic() const
+    {
+      return formulation != Formulation::condensed;
+    }
+
+    /** Closed-form contact tractions to measure the pairs against. */
+    bool compute_traction_errors = false;
+    std::shared_ptr<Functions::ParsedFunction<2>> exact_normal_traction;
+    std::shared_ptr<Functions::ParsedFunction<2>> exact_tangential_traction;
+  };
+
+  /**
+   * One side of a contact pair: the displacement of the side is the
+   * weighted sum sum_i w_i u(node_i) of its nodes' displacements, and the
+   * pair's force on the side goes to its nodes with the same weights (so
+   * that the two are work-conjugate). A node-to-node pair has one node of
+   * weight 1; a mortar or node-to-segment side has several.
+   */
+  template <int dim>
+  struct PairSide
+  {
+    /** One node: its dim DoFs and its weight. */
+    struct Node
+    {
+      std::array<types::global_dof_index, dim> dofs;
+      double                                   weight = 1.;
+    };
+
+    /** Index into the vector of blocks. */
+    unsigned int      block = 0;
+    std::vector<Node> nodes;
+    /** Where the side is, for messages and output. */
+    Point<dim> point;
+  };
+
+  /**
+   * A contact pair: side a on one block facing side b on another. The
+   * force r acts on b and -r on a; r_N = r.n > 0 is compression; the gap
+   * is g0 + (u_b - u_a).n. The normal points from a to b: the outward
+   * normal of a where the sides coincide, the line joining them where a gap
+   * separates them (the common normal of two curved surfaces, so that
+   * closing the gap is not mistaken for slip).
+   */
+  template <int dim>
+  struct ContactPair
+  {
+    unsigned int  interface;
+    PairSide<dim> a;
+    PairSide<dim> b;
+    /** Rows: normal, then the dim-1 tangents; orthonormal. */
+    Tensor<2, dim> frame;
+    double         initial_gap;
+    /** Tributary area (length in 2D, per unit thickness). */
+    double area;
+    /** Friction, cohesion and tensile strength of the joint. */
+    JointLaw joint;
+    /**
+     * Both nodes on a support that fixes a direction oblique to the
+     * interface (a fault meeting a roller boundary): the frame is then the
+     * global axes, the supports carry the force in the fixed direction, and
+     * the pair stays stuck in the free one. Such a pair has fewer free
+     * relative motions than contact conditions; tying it keeps the
+     * geostatic state in equilibrium.
+     */
+    bool tied = false;
+
+    /** Side a (@p sign < 0, force -r) or side b (@p sign > 0, force r). */
+    const PairSide<dim> &
+    side(const int sign) const
+    {
+      return sign < 0 ? a : b;
+    }
+
+    /** Midpoint of the two sides. */
+    Point<dim>
+    midpoint() const
+    {
+      return Point<dim>(0.5 * (a.point + b.point));
+    }
+  };
+
+
+
+  /**
+   * Finds the contact pairs of every declared interface: coincident support
+   * points (initial gap 0), or, where a gap separates the surfaces, mutually
+   * nearest support points within the search distance. Each pair gets its
+   * frame and the tributary area of its nodes, which is their lumped
+   * (Gauss-Lobatto) boundary weight, the mean of the two sides. Nodes left
+   * without a partner, or matched ambiguously, end the run with their count
+   * and coordinates. Pairs on a support oblique to their interface are
+   * tied (ContactPair::tied).
+   */
+  template <int dim>
+  std::vector<ContactPair<dim>>
+  find_contact_pairs(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+                     const ContactParameters                        &parameters,
+                     ConditionalOStream                             &pcout);
+} // namespace mbfem
+
+#endif

@@ -1,0 +1,1307 @@
+#include <mbfem/base/exceptions.h>
+#include <mbfem/block/block.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <algorithm>
+
+namespace mbfem
+{
+  namespace
+  {
+    /** eps : eps */
+    template <int n>
+    double
+    squared(const SymmetricTensor<2, n> &t)
+    {
+      return t * t;
+    }
+  } // namespace
+
+  void
+  DiscretisationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite element");
+    {
+      prm.declare_entry("Polynomial degree",
+                        "2",
+                        Patterns::Integer(1, 4),
+                        "Degree p of the FE_Q(p) Lagrange elements of every "
+                        "block's displacement (1 to 4).");
+      prm.declare_entry(
+        "Mapping degree",
+        "0",
+        Patterns::Integer(0, 4),
+        "Degree of the MappingQ that maps cells to their curved shape. 0 "
+        "means the same as the polynomial degree, which keeps the optimal "
+        "convergence rates on curved boundaries.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  DiscretisationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite element");
+    {
+      degree         = prm.get_integer("Polynomial degree");
+      mapping_degree = prm.get_integer("Mapping degree");
+      if (mapping_degree == 0)
+        mapping_degree = degree;
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  Block<dim>::Block(const Material                 &material,
+                    const DiscretisationParameters &discretisation,
+                    const std::string              &solver_package,
+                    const types::material_id        id)
+    : id(id)
+    , material(material)
+    , fe(FE_Q<dim>(discretisation.degree), dim)
+    , mapping(discretisation.mapping_degree)
+    , direct_solver(solver_package)
+  {}
+
+
+
+  template <int dim>
+  std::string
+  Block<dim>::name() const
+  {
+    return "block " + std::to_string(id);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::setup_system(const BoundaryConditions<dim> &boundary_conditions)
+  {
+    dof_handler.reinit(triangulation);
+    dof_handler.distribute_dofs(fe);
+    solution.reinit(dof_handler.n_dofs());
+    load.reinit(dof_handler.n_dofs());
+    external_load.reinit(dof_handler.n_dofs());
+    physical_load.reinit(dof_handler.n_dofs());
+
+    pins.clear();
+    make_constraints(boundary_conditions);
+
+    // The floating modes, as displacement vectors, and the pins that
+    // remove them; then the constraints again, now with the pins.
+    const std::vector<Vector<double>> modes = rigid_body_modes();
+    free_mode_coefficients                  = compute_free_rigid_body_modes();
+    free_modes.clear();
+    for (const auto &coefficients : free_mode_coefficients)
+      {
+        Vector<double> mode(dof_handler.n_dofs());
+        for (unsigned int a = 0; a < modes.size(); ++a)
+          mode.add(coefficients(a), modes[a]);
+        free_modes.push_back(mode);
+      }
+    choose_pins();
+    make_constraints(boundary_conditions);
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    stiffness.reinit(complete_index_set(dof_handler.n_dofs()),
+                     complete_index_set(dof_handler.n_dofs()),
+                     dsp,
+                     MPI_COMM_SELF);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::set_initial_state(const InSituStress *in_situ_stress,
+                                const Excavation   *excavation_data)
+  {
+    in_situ =
+      (in_situ_stress != nullptr && in_situ_stress->enabled ? in_situ_stress :
+                                                              nullptr);
+    excavation = excavation_data;
+  }
+
+
+
+  template <int dim>
+  const InSituStress *
+  Block<dim>::get_in_situ_stress() const
+  {
+    return in_situ;
+  }
+
+
+
+  PlasticUpdate &
+  PlasticUpdate::operator+=(const PlasticUpdate &other)
+  {
+    change2 += other.change2;
+    norm2 += other.norm2;
+    aitken_numerator += other.aitken_numerator;
+    aitken_denominator += other.aitken_denominator;
+    n_yielded += other.n_yielded;
+    n_points += other.n_points;
+    yielded_measure += other.yielded_measure;
+    max_equivalent = std::max(max_equivalent, other.max_equivalent);
+    return *this;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::set_plasticity(const PlasticityParameters &parameters)
+  {
+    if (!parameters.enabled)
+      return;
+    mohr_coulomb = std::make_unique<MohrCoulomb>(parameters, material);
+    const std::size_t n =
+      triangulation.n_active_cells() * std::size_t(n_plastic_points());
+    plastic_strain_committed.assign(n, SymmetricTensor<2, 3>());
+    plastic_strain.assign(n, SymmetricTensor<2, 3>());
+    plastic_strain_load.assign(n, SymmetricTensor<2, 3>());
+    plastic_residual.assign(n, SymmetricTensor<2, 3>());
+    plastic_residual_previous.assign(n, SymmetricTensor<2, 3>());
+    yielded.assign(n, false);
+    newton = parameters.newton;
+    if (newton)
+      {
+        elastic_tangent = mohr_coulomb->elastic_tangent<dim>();
+        linearisation.tangent.assign(n, elastic_tangent);
+        linearisation.plastic.assign(n, false);
+        linearisation.strain.assign(n, SymmetricTensor<2, dim>());
+        linearisation.stress.assign(n, SymmetricTensor<2, dim>());
+        linearisation_committed = linearisation;
+      }
+  }
+
+
+
+  template <int dim>
+  bool
+  Block<dim>::is_plastic() const
+  {
+    return mohr_coulomb != nullptr;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Block<dim>::n_plastic_points() const
+  {
+    return Utilities::fixed_power<dim>(fe.degree + 1);
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  Block<dim>::plastic_stress(const unsigned int cell,
+                             const unsigned int q) const
+  {
+    return mohr_coulomb->elastic_stress(
+      plastic_strain_load[cell * n_plastic_points() + q]);
+  }
+
+
+
+  template <int dim>
+  PlasticUpdate
+  Block<dim>::update_plastic_strain()
+  {
+    PlasticUpdate result;
+    if (!mohr_coulomb)
+      return result;
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            QGauss<dim>(fe.degree + 1),
+                            update_gradients | update_quadrature_points |
+                              update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> eps(fe_values.n_quadrature_points);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_symmetric_gradients(solution, eps);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const std::size_t index =
+              cell->active_cell_index() * fe_values.n_quadrature_points + q;
+            SymmetricTensor<2, 3> strain; // plane strain: eps_zz = 0
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = i; j < dim; ++j)
+                strain[i][j] = eps[q][i][j];
+            SymmetricTensor<2, 3> trial = mohr_coulomb->elastic_stress(
+              strain - plastic_strain_committed[index]);
+            if (in_situ)
+              trial += in_situ->stress_3d(fe_values.quadrature_point(q));
+            SymmetricTensor<2, 3> stress, increment;
+            yielded[index] = mohr_coulomb->return_map(trial, stress, increment);
+            const SymmetricTensor<2, 3> updated =
+              plastic_strain_committed[index] + increment;
+            const double JxW = fe_values.JxW(q);
+            if (newton && !newton_suspended)
+              {
+                update_newton_point(index, eps[q], trial, stress, JxW, result);
+                plastic_strain_load[index] = updated;
+              }
+            else
+              {
+                const SymmetricTensor<2, 3> residual =
+                  updated - plastic_strain_load[index];
+                result.change2 += squared(residual) * JxW;
+                if (have_previous_residual)
+                  {
+                    const SymmetricTensor<2, 3> &previous =
+                      plastic_residual_previous[index];
+                    result.aitken_numerator +=
+                      (previous * (residual - previous)) * JxW;
+                    result.aitken_denominator +=
+                      squared(residual - previous) * JxW;
+                  }
+                plastic_residual[index] = residual;
+              }
+            plastic_strain[index] = updated;
+            result.norm2 += squared(updated) * JxW;
+            ++result.n_points;
+            if (yielded[index])
+              {
+                ++result.n_yielded;
+                result.yielded_measure += JxW;
+              }
+            result.max_equivalent =
+              std::max(result.max_equivalent,
+                       std::sqrt(2. / 3. * squared(updated)));
+          }
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::update_newton_point(const std::size_t              index,
+                                  const SymmetricTensor<2, dim> &strain,
+                                  const SymmetricTensor<2, 3>   &trial,
+                                  const SymmetricTensor<2, 3>   &stress,
+                                  const double                   JxW,
+                                  PlasticUpdate                 &result)
+  {
+    SymmetricTensor<2, dim> returned, trial_in_plane;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        {
+          returned[i][j]       = stress[i][j];
+          trial_in_plane[i][j] = trial[i][j];
+        }
+    // The residual: the returned stress against the one the linearisation
+    // at u_j predicted (an elastic tangent predicts the trial stress), in
+    // strain units like the initial-stress residual. A point elastic at
+    // both u_j and u_{j+1} has none.
+    if (linearisation.plastic[index] || yielded[index])
+      {
+        const SymmetricTensor<2, dim> predicted =
+          linearisation.plastic[index] ?
+            linearisation.stress[index] +
+              linearisation.tangent[index] *
+                (strain - linearisation.strain[index]) :
+            trial_in_plane;
+        result.change2 += squared(returned - predicted) /
+                          Utilities::fixed_power<2>(2. * material.mu()) * JxW;
+        tangent_is_stale = true;
+      }
+    linearisation.tangent[index] =
+      yielded[index] ? mohr_coulomb->tangent<dim>(trial) : elastic_tangent;
+    linearisation.plastic[index] = yielded[index];
+    linearisation.strain[index]  = strain;
+    linearisation.stress[index]  = returned;
+  }
+
+
+
+  template <int dim>
+  bool
+  Block<dim>::tangent_changed() const
+  {
+    return tangent_is_stale;
+  }
+
+
+
+  template <int dim>
+  bool
+  Block<dim>::suspend_newton(const bool suspend)
+  {
+    if (!newton)
+      return false;
+    newton_suspended = suspend;
+    if (!suspend)
+      return false;
+    // The elastic tangent everywhere: the load then carries D eps_p alone,
+    // as in the initial-stress method, and the residual below is measured
+    // as there (the change of the plastic strain).
+    for (std::size_t i = 0; i < linearisation.tangent.size(); ++i)
+      if (linearisation.plastic[i])
+        {
+          linearisation.tangent[i] = elastic_tangent;
+          linearisation.plastic[i] = false;
+        }
+    tangent_is_stale = assembled_plastic_tangent;
+    return assembled_plastic_tangent;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::relax_plastic_strain(const double omega)
+  {
+    for (std::size_t i = 0; i < plastic_strain_load.size(); ++i)
+      plastic_strain_load[i] += omega * plastic_residual[i];
+    plastic_residual_previous = plastic_residual;
+    have_previous_residual    = true;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::commit_plastic_strain()
+  {
+    plastic_strain_committed = plastic_strain;
+    plastic_strain_load      = plastic_strain;
+    have_previous_residual   = false;
+    if (newton)
+      linearisation_committed = linearisation;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::restore_plastic_state()
+  {
+    if (!mohr_coulomb)
+      return;
+    plastic_strain         = plastic_strain_committed;
+    plastic_strain_load    = plastic_strain_committed;
+    have_previous_residual = false;
+    if (newton)
+      {
+        linearisation    = linearisation_committed;
+        tangent_is_stale = true;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::cell_plastic_fields(std::vector<SymmetricTensor<2, 3>> &stress,
+                                  std::vector<double> &yielded_fraction,
+                                  std::vector<double> &equivalent_strain) const
+  {
+    const unsigned int n_cells = triangulation.n_active_cells();
+    stress.clear();
+    yielded_fraction.assign(n_cells, 0.);
+    equivalent_strain.assign(n_cells, 0.);
+    if (!mohr_coulomb)
+      return;
+    const unsigned int n_q = n_plastic_points();
+    stress.reserve(std::size_t(n_cells) * n_q);
+    for (unsigned int c = 0; c < n_cells; ++c)
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          stress.push_back(plastic_stress(c, q));
+          yielded_fraction[c] += (yielded[c * n_q + q] ? 1. : 0.) / n_q;
+          equivalent_strain[c] =
+            std::max(equivalent_strain[c],
+                     std::sqrt(2. / 3. * squared(plastic_strain[c * n_q + q])));
+        }
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  Block<dim>::initial_stress(const Point<dim> &point) const
+  {
+    return in_situ ? in_situ->stress(point) : SymmetricTensor<2, dim>();
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::make_constraints(
+    const BoundaryConditions<dim> &boundary_conditions)
+  {
+    physical_constraints.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler, physical_constraints);
+    const std::vector<types::boundary_id> ids =
+      triangulation.get_boundary_ids();
+    const auto has_id = [&ids](const types::boundary_id id) {
+      return std::find(ids.begin(), ids.end(), id) != ids.end();
+    };
+
+    for (const auto &[id, mask] : boundary_conditions.dirichlet)
+      if (has_id(id))
+        VectorTools::interpolate_boundary_values(
+          mapping,
+          dof_handler,
+          id,
+          *boundary_conditions.prescribed_displacement,
+          physical_constraints,
+          mask);
+
+    if (!boundary_conditions.point_supports.empty())
+      {
+        const std::vector<Point<dim>> points = support_points();
+        const double tolerance = 1e-6 * GridTools::diameter(triangulation);
+        std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+        for (const auto &[point, mask] : boundary_conditions.point_supports)
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            {
+              cell->get_dof_indices(dof_indices);
+              for (unsigned int i = 0; i < dof_indices.size(); ++i)
+                if (mask[fe.system_to_component_index(i).first] &&
+                    points[dof_indices[i]].distance(point) < tolerance &&
+                    !physical_constraints.is_constrained(dof_indices[i]))
+                  physical_constraints.add_line(dof_indices[i]);
+            }
+      }
+
+    for (const auto &[id, component] : boundary_conditions.rigid_platens)
+      if (has_id(id))
+        {
+          std::vector<bool> selected(dim, false);
+          selected[component] = true;
+          const IndexSet platen_dofs =
+            DoFTools::extract_boundary_dofs(dof_handler,
+                                            ComponentMask(selected),
+                                            {id});
+          types::global_dof_index master = numbers::invalid_dof_index;
+          for (const auto i : platen_dofs)
+            {
+              AssertThrow(!physical_constraints.is_constrained(i),
+                          ExcMessage(
+                            name() + ": the rigid platen on boundary " +
+                            std::to_string(id) +
+                            " overlaps a prescribed displacement of the same "
+                            "component."));
+              if (master == numbers::invalid_dof_index)
+                master = i;
+              else
+                {
+                  physical_constraints.add_line(i);
+                  physical_constraints.add_entry(i, master, 1.);
+                }
+            }
+        }
+    physical_constraints.close();
+
+    constraints.clear();
+    constraints.merge(physical_constraints);
+    for (const auto i : pins)
+      if (!constraints.is_constrained(i))
+        constraints.add_line(i);
+    constraints.close();
+
+    homogeneous_constraints.clear();
+    homogeneous_constraints.copy_from(constraints);
+    for (const auto &line : homogeneous_constraints.get_lines())
+      homogeneous_constraints.set_inhomogeneity(line.index, 0.);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::choose_pins()
+  {
+    // Greedy column pivoting on the free modes: pick the DoF where the
+    // (remaining) modes move most, then remove that direction. q picks give
+    // a nonsingular q x q system, i.e. a statically determinate support.
+    const unsigned int          q        = free_modes.size();
+    std::vector<Vector<double>> residual = free_modes;
+    for (unsigned int pick = 0; pick < q; ++pick)
+      {
+        types::global_dof_index best       = numbers::invalid_dof_index;
+        double                  best_norm2 = 0.;
+        for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+          if (!physical_constraints.is_constrained(i))
+            {
+              double norm2 = 0.;
+              for (const auto &r : residual)
+                norm2 += r(i) * r(i);
+              if (norm2 > best_norm2 * (1. + 1e-12))
+                {
+                  best_norm2 = norm2;
+                  best       = i;
+                }
+            }
+        AssertThrow(best != numbers::invalid_dof_index && best_norm2 > 1e-20,
+                    ExcMessage(name() + ": cannot pin its free modes."));
+        pins.push_back(best);
+
+        // residual <- residual (I - v v^T), v = residual row at best
+        std::vector<double> v(q);
+        for (unsigned int a = 0; a < q; ++a)
+          v[a] = residual[a](best) / std::sqrt(best_norm2);
+        Vector<double> combination(dof_handler.n_dofs());
+        for (unsigned int a = 0; a < q; ++a)
+          combination.add(v[a], residual[a]);
+        for (unsigned int a = 0; a < q; ++a)
+          residual[a].add(-v[a], combination);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::cell_matrix(const FEValues<dim> &fe_values,
+                          FullMatrix<double>  &matrix,
+                          const unsigned int   cell_index) const
+  {
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   n      = fe.n_dofs_per_cell();
+    const double                         lambda = material.lambda();
+    const double                         mu     = material.mu();
+    std::vector<SymmetricTensor<2, dim>> eps(n);
+    std::vector<double>                  div(n);
+
+    matrix = 0.;
+    if (newton)
+      {
+        // The consistent tangent at the points of the plastic state (the
+        // same QGauss(p + 1)); not symmetric for non-associated flow.
+        const unsigned int n_q = fe_values.n_quadrature_points;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const SymmetricTensor<4, dim> &C =
+              linearisation.tangent[cell_index * n_q + q];
+            for (unsigned int i = 0; i < n; ++i)
+              eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+            const double JxW = fe_values.JxW(q);
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const SymmetricTensor<2, dim> C_eps_j = C * eps[j];
+                for (unsigned int i = 0; i < n; ++i)
+                  matrix(i, j) += (eps[i] * C_eps_j) * JxW;
+              }
+          }
+        return;
+      }
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+            div[i] = trace(eps[i]);
+          }
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = i; j < n; ++j)
+            matrix(i, j) +=
+              (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) * JxW;
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        matrix(i, j) = matrix(j, i);
+  }
+
+
+
+  template <int dim>
+  template <typename MatrixType>
+  void
+  Block<dim>::assemble_matrix(const AffineConstraints<double> &constraints,
+                              MatrixType                      &matrix) const
+  {
+    FEValues<dim>      fe_values(mapping,
+                            fe,
+                            QGauss<dim>(fe.degree + 1),
+                            update_gradients | update_JxW_values);
+    FullMatrix<double> cell(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    for (const auto &c : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(c);
+        cell_matrix(fe_values, cell, c->active_cell_index());
+        c->get_dof_indices(dof_indices);
+        constraints.distribute_local_to_global(cell, dof_indices, matrix);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::assemble_stiffness()
+  {
+    // The matrix alone: its constrained rows and columns do not depend on
+    // the prescribed values, so one factorisation serves all times.
+    stiffness = 0.;
+    assemble_matrix(constraints, stiffness);
+    stiffness.compress(VectorOperation::add);
+    tangent_is_stale = false;
+    assembled_plastic_tangent =
+      newton && std::find(linearisation.plastic.begin(),
+                          linearisation.plastic.end(),
+                          true) != linearisation.plastic.end();
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::assemble_unpinned_stiffness(SparsityPattern      &pattern,
+                                          SparseMatrix<double> &matrix) const
+  {
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    physical_constraints,
+                                    false);
+    pattern.copy_from(dsp);
+    matrix.reinit(pattern);
+    assemble_matrix(physical_constraints, matrix);
+  }
+
+
+
+  template <int dim>
+  const AffineConstraints<double> &
+  Block<dim>::get_physical_constraints() const
+  {
+    return physical_constraints;
+  }
+
+
+
+  template <int dim>
+  const Vector<double> &
+  Block<dim>::unpinned_load() const
+  {
+    return physical_load;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::factorize()
+  {
+    try
+      {
+        direct_solver.factorize(stiffness);
+      }
+    catch (const Exceptions::ExcSingularMatrix &e)
+      {
+        AssertThrow(false,
+                    Exceptions::ExcSingularMatrix(name() + ": " +
+                                                  message_of(e)));
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::assemble_load(BoundaryConditions<dim> &boundary_conditions,
+                            const double             time)
+  {
+    boundary_conditions.set_time(time);
+    make_constraints(boundary_conditions);
+    load          = 0.;
+    external_load = 0.;
+    physical_load = 0.;
+
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            QGauss<dim>(fe.degree + 2),
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    FEFaceValues<dim>                    fe_face_values(mapping,
+                                     fe,
+                                     QGauss<dim - 1>(fe.degree + 2),
+                                     update_values | update_quadrature_points |
+                                       update_normal_vectors |
+                                       update_JxW_values);
+    FEValues<dim>                        stiffness_values(mapping,
+                                   fe,
+                                   QGauss<dim>(fe.degree + 1),
+                                   update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    FullMatrix<double>                   matrix(n, n);
+    Vector<double>                       cell_load(n);
+    std::vector<types::global_dof_index> dof_indices(n);
+    Vector<double>                       value(dim);
+
+    // Gravity acts in -y (2D) or -z (3D).
+    Tensor<1, dim> weight;
+    weight[dim - 1] = -material.unit_weight;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell_load = 0.;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            boundary_conditions.body_force->vector_value(
+              fe_values.quadrature_point(q), value);
+            Tensor<1, dim> b = weight;
+            for (unsigned int d = 0; d < dim; ++d)
+              b[d] += value[d];
+            for (unsigned int i = 0; i < n; ++i)
+              cell_load(i) +=
+                fe_values[displacement].value(i, q) * b * fe_values.JxW(q);
+            // The initial stress: -int B^T sigma_0, which gravity and the
+            // boundaries balance in the geostatic state.
+            if (in_situ)
+              {
+                const SymmetricTensor<2, dim> sigma_0 =
+                  initial_stress(fe_values.quadrature_point(q));
+                for (unsigned int i = 0; i < n; ++i)
+                  cell_load(i) -=
+                    (fe_values[displacement].symmetric_gradient(i, q) *
+                     sigma_0) *
+                    fe_values.JxW(q);
+              }
+          }
+
+        // The plastic strain as a load, int B^T D eps_p, at the points of
+        // the plastic state.
+        if (mohr_coulomb)
+          {
+            stiffness_values.reinit(cell);
+            for (const unsigned int q :
+                 stiffness_values.quadrature_point_indices())
+              {
+                const SymmetricTensor<2, 3> s3 =
+                  plastic_stress(cell->active_cell_index(), q);
+                SymmetricTensor<2, dim> s;
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = i; j < dim; ++j)
+                    s[i][j] = s3[i][j];
+                // Newton: + (C_t - D) eps(u_j), the part of K_t u_j that
+                // the elastic stiffness does not give.
+                if (newton)
+                  {
+                    const std::size_t index =
+                      cell->active_cell_index() * n_plastic_points() + q;
+                    if (linearisation.plastic[index])
+                      s += (linearisation.tangent[index] - elastic_tangent) *
+                           linearisation.strain[index];
+                  }
+                for (unsigned int i = 0; i < n; ++i)
+                  cell_load(i) +=
+                    (stiffness_values[displacement].symmetric_gradient(i, q) *
+                     s) *
+                    stiffness_values.JxW(q);
+              }
+          }
+
+        // Far-field boundaries held by the in-situ stress, and the faces
+        // of an excavation with the support of the removed rock, released
+        // as t goes from 0 to 1.
+        if (in_situ)
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                double factor = 0.;
+                if (in_situ->stress_boundaries.count(face->boundary_id()) == 1)
+                  factor = 1.;
+                else if (excavation != nullptr &&
+                         excavation->released_boundaries.count(
+                           face->boundary_id()) == 1)
+                  factor = 1. - Excavation::released(time);
+                if (factor == 0.)
+                  continue;
+                fe_face_values.reinit(cell, face);
+                for (const unsigned int q :
+                     fe_face_values.quadrature_point_indices())
+                  {
+                    const Tensor<1, dim> t =
+                      factor *
+                      (initial_stress(fe_face_values.quadrature_point(q)) *
+                       fe_face_values.normal_vector(q));
+                    for (unsigned int i = 0; i < n; ++i)
+                      cell_load(i) += fe_face_values[displacement].value(i, q) *
+                                      t * fe_face_values.JxW(q);
+                  }
+              }
+
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              boundary_conditions.traction_boundaries.count(
+                face->boundary_id()) == 1)
+            {
+              fe_face_values.reinit(cell, face);
+              for (const unsigned int q :
+                   fe_face_values.quadrature_point_indices())
+                {
+                  boundary_conditions.traction->vector_value(
+                    fe_face_values.quadrature_point(q), value);
+                  Tensor<1, dim> t;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    t[d] = value[d];
+                  for (unsigned int i = 0; i < n; ++i)
+                    cell_load(i) += fe_face_values[displacement].value(i, q) *
+                                    t * fe_face_values.JxW(q);
+                }
+            }
+
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int i = 0; i < n; ++i)
+          external_load(dof_indices[i]) += cell_load(i);
+
+        // The cell matrix is needed only where a prescribed displacement
+        // enters: it moves -K u_D to the right-hand side.
+        bool has_constrained_dof = false;
+        for (const auto i : dof_indices)
+          if (constraints.is_inhomogeneously_constrained(i))
+            has_constrained_dof = true;
+        if (has_constrained_dof)
+          {
+            stiffness_values.reinit(cell);
+            cell_matrix(stiffness_values, matrix, cell->active_cell_index());
+            constraints.distribute_local_to_global(cell_load,
+                                                   dof_indices,
+                                                   load,
+                                                   matrix);
+            physical_constraints.distribute_local_to_global(cell_load,
+                                                            dof_indices,
+                                                            physical_load,
+                                                            matrix);
+          }
+        else
+          {
+            constraints.distribute_local_to_global(cell_load,
+                                                   dof_indices,
+                                                   load);
+            physical_constraints.distribute_local_to_global(cell_load,
+                                                            dof_indices,
+                                                            physical_load);
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::add_point_forces(const std::vector<types::global_dof_index> &dofs,
+                               const std::vector<double> &forces)
+  {
+    AssertDimension(dofs.size(), forces.size());
+    Vector<double> local(forces.begin(), forces.end());
+    homogeneous_constraints.distribute_local_to_global(local, dofs, load);
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      external_load(dofs[i]) += forces[i];
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::solve(const std::vector<double> &alpha)
+  {
+    direct_solver.solve(solution, load);
+    constraints.distribute(solution);
+    AssertThrow(alpha.empty() || alpha.size() == free_modes.size(),
+                ExcInternalError());
+    for (unsigned int i = 0; i < alpha.size(); ++i)
+      solution.add(alpha[i], free_modes[i]);
+  }
+
+
+
+  template <int dim>
+  FullMatrix<double>
+  Block<dim>::flexibility(
+    const std::vector<types::global_dof_index> &dofs) const
+  {
+    const unsigned int     m = dofs.size();
+    const std::size_t      n = dof_handler.n_dofs();
+    FullMatrix<double>     result(m, m);
+    constexpr unsigned int chunk = 64; // right-hand sides per solve
+    std::vector<double>    rhs, x;
+    for (unsigned int first = 0; first < m; first += chunk)
+      {
+        const unsigned int count = std::min(chunk, m - first);
+        rhs.assign(n * count, 0.);
+        x.assign(n * count, 0.);
+        for (unsigned int k = 0; k < count; ++k)
+          {
+            // A unit force at a constrained DoF goes where the constraints
+            // send it (a platen node loads the platen; a fixed node, none).
+            Vector<double> column(n);
+            homogeneous_constraints.distribute_local_to_global(
+              Vector<double>({1.}),
+              std::vector<types::global_dof_index>{dofs[first + k]},
+              column);
+            std::copy(column.begin(), column.end(), rhs.begin() + k * n);
+          }
+        direct_solver.solve(x.data(), rhs.data(), count);
+        for (unsigned int k = 0; k < count; ++k)
+          {
+            Vector<double> column(x.begin() + k * n, x.begin() + (k + 1) * n);
+            homogeneous_constraints.distribute(column);
+            for (unsigned int i = 0; i < m; ++i)
+              result(i, first + k) = column(dofs[i]);
+          }
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Block<dim>::external_load_resultant() const
+  {
+    std::vector<double> result(free_modes.size());
+    for (unsigned int a = 0; a < free_modes.size(); ++a)
+      result[a] = free_modes[a] * external_load;
+    return result;
+  }
+
+
+
+  template <int dim>
+  const std::vector<Vector<double>> &
+  Block<dim>::floating_modes() const
+  {
+    return free_modes;
+  }
+
+
+
+  template <int dim>
+  std::vector<Point<dim>>
+  Block<dim>::support_points() const
+  {
+    std::vector<Point<dim>> points(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+    return points;
+  }
+
+
+
+  template <int dim>
+  std::vector<Vector<double>>
+  Block<dim>::rigid_body_modes() const
+  {
+    const std::vector<Point<dim>>        points = support_points();
+    std::vector<unsigned int>            component(dof_handler.n_dofs());
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int i = 0; i < dof_indices.size(); ++i)
+          component[dof_indices[i]] = fe.system_to_component_index(i).first;
+      }
+
+    // Rotations about the centre, lengths in units of the block's size:
+    // this keeps the modes of unit order whatever the units of the model.
+    Point<dim> centre;
+    for (const auto &p : points)
+      centre += p / static_cast<double>(points.size());
+    const double size = GridTools::diameter(triangulation);
+
+    const unsigned int          n_modes = (dim == 2 ? 3 : 6);
+    std::vector<Vector<double>> modes(n_modes, Vector<double>(points.size()));
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const Tensor<1, dim> x = (points[i] - centre) / size;
+        const unsigned int   c = component[i];
+        modes[c](i)            = 1.;
+        if (dim == 2)
+          modes[2](i) = (c == 0 ? -x[1] : x[0]); // rotation about z
+        else
+          for (unsigned int axis = 0; axis < 3; ++axis)
+            {
+              // (e_axis x x)_c: rotation about the coordinate axis
+              Tensor<1, dim> e;
+              e[axis]                   = 1.;
+              const Tensor<1, dim> curl = cross_product_3d(e, x);
+              modes[dim + axis](i)      = curl[c];
+            }
+      }
+    return modes;
+  }
+
+
+
+  template <int dim>
+  const std::vector<Vector<double>> &
+  Block<dim>::free_rigid_body_modes() const
+  {
+    return free_mode_coefficients;
+  }
+
+
+
+  template <int dim>
+  std::vector<Vector<double>>
+  Block<dim>::compute_free_rigid_body_modes() const
+  {
+    const std::vector<Vector<double>> modes   = rigid_body_modes();
+    const unsigned int                n_modes = modes.size();
+
+    // G = A^T A, with A the constraint equations of the supports applied to
+    // the modes (a prescribed DoF: m_i = 0; a platen node: m_i - m_master =
+    // 0): the free modes are G's null space.
+    LAPACKFullMatrix<double> gram(n_modes, n_modes);
+    std::vector<double>      equation(n_modes);
+    for (const auto &line : physical_constraints.get_lines())
+      {
+        for (unsigned int a = 0; a < n_modes; ++a)
+          {
+            equation[a] = modes[a](line.index);
+            for (const auto &[j, weight] : line.entries)
+              equation[a] -= weight * modes[a](j);
+          }
+        for (unsigned int a = 0; a < n_modes; ++a)
+          for (unsigned int b = 0; b < n_modes; ++b)
+            gram(a, b) += equation[a] * equation[b];
+      }
+
+    // Mode values are of unit order, so a held mode has an eigenvalue of
+    // order one or more (one prescribed DoF at distance 1e-4 of the block
+    // size from the centre still gives 1e-8); a free one has round-off.
+    Vector<double>     eigenvalues;
+    FullMatrix<double> eigenvectors;
+    gram.compute_eigenvalues_symmetric(
+      -1., 1e-10, 1e-14, eigenvalues, eigenvectors);
+
+    // The null space has no preferred basis (LAPACK may return any
+    // rotation of it); reduced row-echelon form makes it unique and
+    // readable: "translation x", not "0.71 translation x + 0.71 ...".
+    const unsigned int n_free = eigenvalues.size();
+    FullMatrix<double> basis(n_free, n_modes);
+    for (unsigned int k = 0; k < n_free; ++k)
+      for (unsigned int a = 0; a < n_modes; ++a)
+        basis(k, a) = eigenvectors(a, k);
+    unsigned int row = 0;
+    for (unsigned int column = 0; column < n_modes && row < n_free; ++column)
+      {
+        unsigned int pivot = row;
+        for (unsigned int k = row + 1; k < n_free; ++k)
+          if (std::abs(basis(k, column)) > std::abs(basis(pivot, column)))
+            pivot = k;
+        if (std::abs(basis(pivot, column)) < 1e-8)
+          continue;
+        basis.swap_row(row, pivot);
+        const double scale = basis(row, column);
+        for (unsigned int a = 0; a < n_modes; ++a)
+          basis(row, a) /= scale;
+        for (unsigned int k = 0; k < n_free; ++k)
+          if (k != row)
+            {
+              const double factor = basis(k, column);
+              for (unsigned int a = 0; a < n_modes; ++a)
+                basis(k, a) -= factor * basis(row, a);
+            }
+        ++row;
+      }
+
+    std::vector<Vector<double>> free_modes(n_free, Vector<double>(n_modes));
+    for (unsigned int k = 0; k < n_free; ++k)
+      for (unsigned int a = 0; a < n_modes; ++a)
+        free_modes[k](a) = (std::abs(basis(k, a)) < 1e-12 ? 0. : basis(k, a));
+    return free_modes;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Block<dim>::describe_rigid_body_mode(const Vector<double> &coefficients)
+  {
+    static const char *names_2d[] = {"translation x",
+                                     "translation y",
+                                     "rotation about z"};
+    static const char *names_3d[] = {"translation x",
+                                     "translation y",
+                                     "translation z",
+                                     "rotation about x",
+                                     "rotation about y",
+                                     "rotation about z"};
+    std::string        description;
+    for (unsigned int a = 0; a < coefficients.size(); ++a)
+      if (std::abs(coefficients(a)) > 1e-3)
+        {
+          description += (description.empty() ? "" : " + ");
+          if (std::abs(std::abs(coefficients(a)) - 1.) > 1e-3)
+            {
+              char factor[32];
+              std::snprintf(factor, sizeof(factor), "%.2f ", coefficients(a));
+              description += factor;
+            }
+          description += (dim == 2 ? names_2d[a] : names_3d[a]);
+        }
+    return description;
+  }
+
+
+
+  template <int dim>
+  ErrorNorms
+  Block<dim>::compute_errors(const Function<dim> &exact_displacement,
+                             const Function<dim> &exact_stress) const
+  {
+    AssertDimension(exact_displacement.n_components, dim);
+    AssertDimension(exact_stress.n_components, dim * dim);
+
+    // A plastic block: at the points of its plastic state.
+    const QGauss<dim> quadrature(mohr_coulomb ? fe.degree + 1 : fe.degree + 3);
+    FEValues<dim>     fe_values(mapping,
+                            fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<Tensor<1, dim>>          u(quadrature.size());
+    std::vector<SymmetricTensor<2, dim>> eps(quadrature.size());
+    Vector<double>                       u_exact(dim);
+    Vector<double>                       sigma_exact(dim * dim);
+
+    double u_error2 = 0., u_norm2 = 0., s_error2 = 0., s_norm2 = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_values(solution, u);
+        fe_values[displacement].get_function_symmetric_gradients(solution, eps);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Point<dim> &x = fe_values.quadrature_point(q);
+            exact_displacement.vector_value(x, u_exact);
+            exact_stress.vector_value(x, sigma_exact);
+            SymmetricTensor<2, dim> sigma =
+              material.stress(eps[q]) + initial_stress(x);
+            if (mohr_coulomb)
+              {
+                const SymmetricTensor<2, 3> s =
+                  plastic_stress(cell->active_cell_index(), q);
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = i; j < dim; ++j)
+                    sigma[i][j] -= s[i][j];
+              }
+            const double JxW = fe_values.JxW(q);
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                u_error2 +=
+                  Utilities::fixed_power<2>(u[q][i] - u_exact[i]) * JxW;
+                u_norm2 += Utilities::fixed_power<2>(u_exact[i]) * JxW;
+                for (unsigned int j = 0; j < dim; ++j)
+                  {
+                    const double s = sigma_exact[i * dim + j];
+                    s_error2 +=
+                      Utilities::fixed_power<2>(sigma[i][j] - s) * JxW;
+                    s_norm2 += s * s * JxW;
+                  }
+              }
+          }
+      }
+
+    ErrorNorms errors;
+    errors.displacement = std::sqrt(u_error2);
+    errors.stress       = std::sqrt(s_error2);
+    errors.displacement_relative =
+      u_norm2 > 0. ? std::sqrt(u_error2 / u_norm2) : errors.displacement;
+    errors.stress_relative =
+      s_norm2 > 0. ? std::sqrt(s_error2 / s_norm2) : errors.stress;
+    return errors;
+  }
+
+
+
+  template <int dim>
+  double
+  Block<dim>::max_displacement() const
+  {
+    // Lagrange elements: nodal values are point values, so the maximum over
+    // the support points is the one a user sees in ParaView.
+    double                               max2 = 0.;
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int v = 0; v < fe.base_element(0).n_dofs_per_cell(); ++v)
+          {
+            double norm2 = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              norm2 += Utilities::fixed_power<2>(
+                solution(dof_indices[fe.component_to_system_index(d, v)]));
+            max2 = std::max(max2, norm2);
+          }
+      }
+    return std::sqrt(max2);
+  }
+
+
+
+  template <int dim>
+  double
+  Block<dim>::max_von_mises_stress() const
+  {
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            QGauss<dim>(fe.degree + 1),
+                            update_gradients | update_quadrature_points);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> eps(fe_values.n_quadrature_points);
+    double                               result = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_symmetric_gradients(solution, eps);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            SymmetricTensor<2, 3> sigma = material.stress_3d<dim>(eps[q]);
+            if (in_situ)
+              sigma += in_situ->stress_3d(fe_values.quadrature_point(q));
+            if (mohr_coulomb)
+              sigma -= plastic_stress(cell->active_cell_index(), q);
+            result = std::max(result, von_mises_stress(sigma));
+          }
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  Block<dim>::n_dofs() const
+  {
+    return dof_handler.n_dofs();
+  }
+
+
+
+  template class Block<2>;
+  template class Block<3>;
+} // namespace mbfem

@@ -1,0 +1,979 @@
+#include <mbfem/base/exceptions.h>
+#include <mbfem/contact/contact_solver.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace mbfem
+{
+  std::string
+  to_string(const ContactState state)
+  {
+    switch (state)
+      {
+        case ContactState::stick:
+          return "stick";
+        case ContactState::slip:
+          return "slip";
+        default:
+          return "open";
+      }
+  }
+
+
+
+  std::string
+  to_string(const ContactFormulation formulation)
+  {
+    return formulation == ContactFormulation::condensed ? "condensed" :
+                                                          "monolithic";
+  }
+
+
+
+  template <int dim>
+  ContactSolver<dim>::ContactSolver(std::vector<ContactPair<dim>> pairs,
+                                    const unsigned int       max_iterations,
+                                    const ContactFormulation formulation,
+                                    const std::string       &solver_package)
+    : contact_pairs(std::move(pairs))
+    , max_iterations(max_iterations)
+    , n_pairs(contact_pairs.size())
+    , contact_formulation(formulation)
+  {
+    if (formulation == ContactFormulation::monolithic)
+      monolithic = std::make_unique<MonolithicSystem<dim>>(solver_package);
+    committed.state.resize(n_pairs);
+    committed.broken.assign(n_pairs, false);
+    committed.tensile_slip.assign(n_pairs, false);
+    committed.slip_direction.assign(n_pairs, Tensor<1, dim>());
+    committed.direction_stiffness.assign(n_pairs, 0.);
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      committed.state[k] =
+        (contact_pairs[k].initial_gap > 0. ? ContactState::open :
+                                             ContactState::stick);
+    committed_displacement.assign(n_pairs, Tensor<1, dim>());
+    current              = committed;
+    current_displacement = committed_displacement;
+  }
+
+
+
+  template <int dim>
+  ContactFormulation
+  ContactSolver<dim>::formulation() const
+  {
+    return contact_formulation;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::setup(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks)
+  {
+    const unsigned int n_r       = n_pairs * dim;
+    const bool         condensed = !monolithic;
+
+    alpha_offset.assign(blocks.size(), 0);
+    n_alpha.assign(blocks.size(), 0);
+    n_alpha_total = 0;
+    block_names.clear();
+    mode_coefficients.clear();
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      {
+        alpha_offset[b] = n_alpha_total;
+        n_alpha[b]      = blocks[b]->floating_modes().size();
+        n_alpha_total += n_alpha[b];
+        block_names.push_back(blocks[b]->name());
+        mode_coefficients.push_back(blocks[b]->free_rigid_body_modes());
+      }
+
+    // Global components first: C_a and P.
+    FullMatrix<double> c_global(condensed ? n_r : 0, condensed ? n_r : 0);
+    FullMatrix<double> p_global(n_r, n_alpha_total);
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      {
+        // The pair sides on this block: (pair, sign); b gets +r, a gets -r.
+        std::vector<std::pair<unsigned int, double>>    sides;
+        std::vector<types::global_dof_index>            dofs;
+        std::map<types::global_dof_index, unsigned int> index_of;
+        for (unsigned int k = 0; k < n_pairs; ++k)
+          for (const int sign : {-1, 1})
+            {
+              const auto &side = contact_pairs[k].side(sign);
+              if (side.block != b)
+                continue;
+              sides.emplace_back(k, sign);
+              for (const auto &node : side.nodes)
+                for (const auto dof : node.dofs)
+                  if (index_of.emplace(dof, dofs.size()).second)
+                    dofs.push_back(dof);
+            }
+        if (dofs.empty())
+          continue;
+
+        // The monolithic system needs no flexibility; the free modes at
+        // the pairs (P) it still needs to name a block it cannot hold.
+        const FullMatrix<double> c_block =
+          condensed ? blocks[b]->flexibility(dofs) : FullMatrix<double>();
+        const auto &modes = blocks[b]->floating_modes();
+        // A side's displacement is sum_i w_i u(node_i): C_a and P take
+        // the same weights.
+        for (const auto &[k, sign_k] : sides)
+          {
+            const auto &nodes_k = contact_pairs[k].side(sign_k).nodes;
+            if (condensed)
+              for (const auto &[l, sign_l] : sides)
+                for (const auto &node_k : nodes_k)
+                  for (const auto &node_l : contact_pairs[l].side(sign_l).nodes)
+                    {
+                      const double weight =
+                        sign_k * sign_l * node_k.weight * node_l.weight;
+                      for (unsigned int c = 0; c < dim; ++c)
+                        for (unsigned int e = 0; e < dim; ++e)
+                          c_global(k * dim + c, l * dim + e) +=
+                            weight * c_block(index_of[node_k.dofs[c]],
+                                             index_of[node_l.dofs[e]]);
+                    }
+            for (const auto &node : nodes_k)
+              for (unsigned int a = 0; a < modes.size(); ++a)
+                for (unsigned int c = 0; c < dim; ++c)
+                  p_global(k * dim + c, alpha_offset[b] + a) +=
+                    sign_k * node.weight * modes[a](node.dofs[c]);
+          }
+      }
+
+    // Into the pairs' frames.
+    flexibility.reinit(condensed ? n_r : 0, condensed ? n_r : 0);
+    coupling.reinit(n_r, n_alpha_total);
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        const Tensor<2, dim> &rk = contact_pairs[k].frame;
+        for (unsigned int l = 0; l < n_pairs && condensed; ++l)
+          {
+            const Tensor<2, dim> &rl = contact_pairs[l].frame;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                {
+                  double value = 0.;
+                  for (unsigned int c = 0; c < dim; ++c)
+                    for (unsigned int e = 0; e < dim; ++e)
+                      value += rk[i][c] * c_global(k * dim + c, l * dim + e) *
+                               rl[j][e];
+                  flexibility(k * dim + i, l * dim + j) = value;
+                }
+          }
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int a = 0; a < n_alpha_total; ++a)
+            {
+              double value = 0.;
+              for (unsigned int c = 0; c < dim; ++c)
+                value += rk[i][c] * p_global(k * dim + c, a);
+              coupling(k * dim + i, a) = value;
+            }
+      }
+
+    if (monolithic)
+      {
+        monolithic->setup(blocks, contact_pairs);
+        held = monolithic->held();
+        return;
+      }
+
+    double trace = 0.;
+    for (unsigned int i = 0; i < n_r; ++i)
+      trace += flexibility(i, i);
+    flexibility_scale = (n_r > 0 && trace > 0. ? trace / n_r : 1.);
+
+    // A direction in which neither node can move (both on supports) carries
+    // no contact force: the supports take it.
+    double max_diagonal = 0.;
+    for (unsigned int i = 0; i < n_r; ++i)
+      max_diagonal = std::max(max_diagonal, flexibility(i, i));
+    held.assign(n_pairs, std::array<bool, dim>());
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          double mobility = 0.;
+          for (unsigned int a = 0; a < n_alpha_total; ++a)
+            mobility = std::max(mobility, std::abs(coupling(k * dim + d, a)));
+          held[k][d] =
+            flexibility(k * dim + d, k * dim + d) < 1e-12 * max_diagonal &&
+            mobility < 1e-12;
+        }
+  }
+
+
+
+  template <int dim>
+  std::vector<PairEquation<dim>>
+  ContactSolver<dim>::pair_equations(const Trial &trial) const
+  {
+    std::vector<PairEquation<dim>> equations(n_pairs * dim);
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        const auto        &pair  = contact_pairs[k];
+        const ContactState state = trial.state[k];
+        // Slip: |r_T| = c A + mu r_N, as the coefficients of r_N and 1.
+        const double mu =
+          trial.tensile_slip[k] ? 0. : pair.joint.friction_coefficient;
+        const double strength_0 =
+          pair.joint.shear_strength(0., pair.area, trial.broken[k]);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            PairEquation<dim> &eq = equations[k * dim + d];
+            if (held[k][d] || state == ContactState::open)
+              eq.force_coefficients[d] = 1.; // no force
+            else if (d == 0 || state == ContactState::stick)
+              {
+                // Closed: gap zero (normal); stuck: no tangential increment.
+                eq.displacement_coefficients[d] = 1.;
+                eq.value =
+                  (d == 0 ? -pair.initial_gap : committed_displacement[k][d]);
+              }
+            else
+              {
+                // Slip: r_T = -(c A + mu r_N) s. In 3D s = v/|v|, v the
+                // slip increment, linearised about the last iterate (Newton
+                // on the direction):
+                //   r_T + mu s r_N + beta (I - s s^T) v = -c A s,
+                // which is the slip law itself once (I - s s^T) v = 0.
+                const double s           = trial.slip_direction[k][d];
+                eq.force_coefficients[d] = 1.;
+                eq.force_coefficients[0] += mu * s;
+                eq.value          = -strength_0 * s;
+                const double beta = trial.direction_stiffness[k];
+                for (unsigned int e = 1; e < dim && beta > 0.; ++e)
+                  {
+                    const double m =
+                      (d == e ? 1. : 0.) - s * trial.slip_direction[k][e];
+                    eq.displacement_coefficients[e] = beta * m;
+                    eq.value += beta * m * committed_displacement[k][e];
+                  }
+              }
+          }
+      }
+    return equations;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::solve_trial(const Trial    &trial,
+                                  Vector<double> &solution,
+                                  Vector<double> &displacement)
+  {
+    const std::vector<PairEquation<dim>> equations = pair_equations(trial);
+    if (monolithic)
+      {
+        // A block the states cannot hold makes the whole system singular;
+        // say so before a sparse LU returns noise.
+        if (!unheld_blocks(trial).empty())
+          return false;
+        return monolithic->solve(equations, solution, displacement);
+      }
+    if (!solve_condensed(equations, solution))
+      return false;
+    displacement = relative_displacement(solution);
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::solve_condensed(
+    const std::vector<PairEquation<dim>> &equations,
+    Vector<double>                       &solution) const
+  {
+    const unsigned int       n_r = n_pairs * dim;
+    const unsigned int       n   = n_r + n_alpha_total;
+    LAPACKFullMatrix<double> matrix(n, n);
+    Vector<double>           rhs(n);
+    // Unknowns: rho * scale (a displacement) and alpha, so that all entries
+    // are of unit order whatever the units of the model; the singularity
+    // test below then means the same for a rubber and a rock model. A row
+    // with force terms is multiplied by scale.
+    const double scale = flexibility_scale;
+
+    for (unsigned int row = 0; row < n_r; ++row)
+      {
+        const unsigned int       k         = row / dim;
+        const PairEquation<dim> &eq        = equations[row];
+        const bool               force_row = eq.has_force_terms();
+        const double             row_scale = (force_row ? scale : 1.);
+        // d_e = C_hat rho + P_hat alpha + Delta_F, with rho = x / scale.
+        double value = eq.value;
+        for (unsigned int e = 0; e < dim; ++e)
+          {
+            const double a = eq.displacement_coefficients[e];
+            if (a != 0.)
+              {
+                const unsigned int source = k * dim + e;
+                for (unsigned int j = 0; j < n_r; ++j)
+                  matrix(row, j) +=
+                    row_scale * a * flexibility(source, j) / scale;
+                for (unsigned int b = 0; b < n_alpha_total; ++b)
+                  matrix(row, n_r + b) += row_scale * a * coupling(source, b);
+                value -= a * external_displacement(source);
+              }
+            if (eq.force_coefficients[e] != 0.)
+              matrix(row, k * dim + e) += eq.force_coefficients[e];
+          }
+        rhs(row) = row_scale * value;
+      }
+    // Equilibrium of the floating blocks: P^T r = -F_e.
+    for (unsigned int a = 0; a < n_alpha_total; ++a)
+      {
+        for (unsigned int j = 0; j < n_r; ++j)
+          matrix(n_r + a, j) = coupling(j, a);
+        rhs(n_r + a) = -external_resultant[a] * scale;
+      }
+
+    const double norm = matrix.l1_norm();
+    try
+      {
+        matrix.compute_lu_factorization();
+      }
+    catch (const LACExceptions::ExcSingular &)
+      {
+        return false; // an exactly zero pivot
+      }
+    // Condition estimate ||A||_1 ||A^{-1}||_1 from two pseudo-random
+    // right-hand sides (LAPACKFullMatrix's own estimate is for Cholesky).
+    double inverse_norm = 0.;
+    for (unsigned int trial = 0; trial < 2; ++trial)
+      {
+        Vector<double> probe(n);
+        for (unsigned int i = 0; i < n; ++i)
+          probe(i) = std::sin(1.3 + 0.7 * i * (trial + 1)) + 0.1;
+        const double probe_norm = probe.l1_norm();
+        matrix.solve(probe);
+        inverse_norm = std::max(inverse_norm, probe.l1_norm() / probe_norm);
+      }
+    if (!(norm * inverse_norm < 1e12))
+      return false;
+    matrix.solve(rhs);
+    for (unsigned int i = 0; i < n_r; ++i)
+      rhs(i) /= scale;
+    solution = rhs;
+    return true;
+  }
+
+
+
+  template <int dim>
+  typename ContactSolver<dim>::Trial
+  ContactSolver<dim>::check(const Trial          &trial,
+                            const Vector<double> &solution,
+                            const Vector<double> &displacement,
+                            std::vector<double>  &violation,
+                            double               &direction_change) const
+  {
+    const unsigned int n_r = n_pairs * dim;
+
+    // Scales of the tolerances: what both formulations know (not Delta_F,
+    // which only the condensed one computes), so that they decide alike.
+    double force_scale = 1e-300, displacement_scale = 1e-300;
+    for (unsigned int i = 0; i < n_r; ++i)
+      {
+        force_scale = std::max(force_scale, std::abs(solution(i)));
+        displacement_scale =
+          std::max(displacement_scale, std::abs(displacement(i)));
+      }
+    for (const double f : external_resultant)
+      force_scale = std::max(force_scale, std::abs(f));
+    for (const auto &pair : contact_pairs)
+      displacement_scale = std::max(displacement_scale, pair.initial_gap);
+    const double force_tolerance        = 1e-9 * force_scale;
+    const double displacement_tolerance = 1e-9 * displacement_scale;
+
+    Trial next = trial;
+    violation.assign(n_pairs, 0.);
+    direction_change = 0.;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        if (std::all_of(held[k].begin(), held[k].end(), [](bool h) {
+              return h;
+            }))
+          continue;
+        const auto &pair = contact_pairs[k];
+        if (pair.tied)
+          continue; // stays stuck
+        const double tension_limit =
+          pair.joint.tensile_limit(pair.area, trial.broken[k]);
+        const double   r_n = solution(k * dim);
+        Tensor<1, dim> r_t, d_t, increment_t;
+        for (unsigned int d = 1; d < dim; ++d)
+          {
+            r_t[d]         = solution(k * dim + d);
+            d_t[d]         = displacement(k * dim + d);
+            increment_t[d] = d_t[d] - committed_displacement[k][d];
+          }
+        const auto break_open = [&]() {
+          next.state[k] = ContactState::open;
+          if (!trial.broken[k] && pair.joint.has_strength())
+            next.broken[k] = true;
+          next.tensile_slip[k] = false;
+          violation[k]         = (-tension_limit - r_n) / force_scale;
+        };
+
+        switch (trial.state[k])
+          {
+            case ContactState::stick:
+              {
+                const double limit =
+                  pair.joint.shear_strength(r_n, pair.area, trial.broken[k]);
+                if (r_n < -tension_limit - force_tolerance)
+                  break_open();
+                else if (r_t.norm() > limit + force_tolerance)
+                  {
+                    next.state[k]               = ContactState::slip;
+                    next.slip_direction[k]      = -r_t / r_t.norm();
+                    next.direction_stiffness[k] = 0.;
+                    next.tensile_slip[k]        = r_n < 0.;
+                    violation[k] = (r_t.norm() - limit) / force_scale;
+                  }
+                break;
+              }
+            case ContactState::slip:
+              {
+                const double along = increment_t * trial.slip_direction[k];
+                // A slip increment against the assumed direction (2D: a
+                // reversed sign; 3D: more than 90 degrees off) or none at
+                // all means the pair sticks.
+                const bool sticks =
+                  along < -displacement_tolerance ||
+                  (dim == 3 && increment_t.norm() < displacement_tolerance);
+                if (r_n < -tension_limit - force_tolerance)
+                  break_open();
+                else if (sticks)
+                  {
+                    next.state[k] = ContactState::stick;
+                    violation[k]  = std::abs(along) / displacement_scale;
+                  }
+                else
+                  {
+                    if (dim == 3)
+                      {
+                        // Next Newton step about this slip increment.
+                        const Tensor<1, dim> s =
+                          increment_t / increment_t.norm();
+                        direction_change =
+                          std::max(direction_change,
+                                   (s - trial.slip_direction[k]).norm());
+                        next.slip_direction[k] = s;
+                        next.direction_stiffness[k] =
+                          pair.joint.shear_strength(r_n,
+                                                    pair.area,
+                                                    trial.broken[k],
+                                                    trial.tensile_slip[k]) /
+                          increment_t.norm();
+                      }
+                    const bool tensile = r_n < -force_tolerance;
+                    if (tensile != trial.tensile_slip[k])
+                      {
+                        next.tensile_slip[k] = tensile;
+                        violation[k]         = std::abs(r_n) / force_scale;
+                      }
+                  }
+                break;
+              }
+            case ContactState::open:
+              {
+                const double gap = pair.initial_gap + displacement(k * dim);
+                if (gap < -displacement_tolerance)
+                  {
+                    next.state[k] = ContactState::stick;
+                    violation[k]  = -gap / displacement_scale;
+                  }
+                break;
+              }
+          }
+      }
+    return next;
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  ContactSolver<dim>::relative_displacement(
+    const Vector<double> &solution) const
+  {
+    const unsigned int n_r = n_pairs * dim;
+    Vector<double>     d(n_r);
+    for (unsigned int i = 0; i < n_r; ++i)
+      {
+        double value = external_displacement(i);
+        for (unsigned int j = 0; j < n_r; ++j)
+          value += flexibility(i, j) * solution(j);
+        for (unsigned int a = 0; a < n_alpha_total; ++a)
+          value += coupling(i, a) * solution(n_r + a);
+        d(i) = value;
+      }
+    return d;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactSolver<dim>::signature(const Trial &trial) const
+  {
+    std::string s(n_pairs, ' ');
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        // In 2D the slip sign is part of the state; in 3D the direction is
+        // a continuous unknown, iterated separately.
+        char c = (trial.state[k] == ContactState::stick ? 'k' :
+                  trial.state[k] == ContactState::open  ? 'o' :
+                  dim == 3                              ? 's' :
+                  trial.slip_direction[k][1] > 0        ? '+' :
+                                                          '-');
+        if (trial.broken[k])
+          c = static_cast<char>(std::toupper(c));
+        if (trial.tensile_slip[k])
+          c = 't';
+        s[k] = c;
+      }
+    return s;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactSolver<dim>::diagnose_singular(const Trial &trial) const
+  {
+    const std::string message = unheld_blocks(trial);
+    if (!message.empty())
+      return message;
+    return "\n    The interface system is singular, and no floating "
+           "block is to blame: check for pairs whose nodes are both "
+           "fixed in some direction.";
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactSolver<dim>::unheld_blocks(const Trial &trial) const
+  {
+    std::ostringstream message;
+    for (unsigned int b = 0; b < n_alpha.size(); ++b)
+      {
+        const unsigned int q = n_alpha[b];
+        if (q == 0)
+          continue;
+        // The directions in which the block's pairs can push, given their
+        // states; the block is held iff they span its q free modes.
+        std::vector<std::vector<double>> columns;
+        unsigned int                     counts[3] = {0, 0, 0};
+        for (unsigned int k = 0; k < n_pairs; ++k)
+          {
+            bool touches = false;
+            for (unsigned int a = 0; a < q; ++a)
+              for (unsigned int d = 0; d < dim; ++d)
+                if (std::abs(coupling(k * dim + d, alpha_offset[b] + a)) > 0.)
+                  touches = true;
+            if (!touches)
+              continue;
+            ++counts[static_cast<int>(trial.state[k])];
+            if (trial.state[k] == ContactState::open)
+              continue;
+            const double mu = trial.tensile_slip[k] ?
+                                0. :
+                                contact_pairs[k].joint.friction_coefficient;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                if (held[k][d] ||
+                    (trial.state[k] == ContactState::slip && d > 0))
+                  continue;
+                std::vector<double> column(q);
+                for (unsigned int a = 0; a < q; ++a)
+                  {
+                    column[a] = coupling(k * dim + d, alpha_offset[b] + a);
+                    if (trial.state[k] == ContactState::slip)
+                      for (unsigned int e = 1; e < dim; ++e)
+                        column[a] -= mu * trial.slip_direction[k][e] *
+                                     coupling(k * dim + e, alpha_offset[b] + a);
+                  }
+                columns.push_back(column);
+              }
+          }
+        LAPACKFullMatrix<double> gram(q, q);
+        for (const auto &column : columns)
+          for (unsigned int a = 0; a < q; ++a)
+            for (unsigned int c = 0; c < q; ++c)
+              gram(a, c) += column[a] * column[c];
+        double largest = 1.;
+        for (unsigned int a = 0; a < q; ++a)
+          largest = std::max(largest, gram(a, a));
+        Vector<double>     eigenvalues;
+        FullMatrix<double> eigenvectors;
+        gram.compute_eigenvalues_symmetric(
+          -1., 1e-10 * largest, 1e-14, eigenvalues, eigenvectors);
+        if (eigenvalues.size() == 0)
+          continue;
+        message << "\n    " << block_names[b]
+                << " cannot be in equilibrium: its contact pairs (" << counts[0]
+                << " stick, " << counts[1] << " slip, " << counts[2]
+                << " open) cannot hold its rigid-body motion";
+        for (unsigned int v = 0; v < eigenvalues.size(); ++v)
+          {
+            Vector<double> combination(mode_coefficients[b][0].size());
+            for (unsigned int a = 0; a < q; ++a)
+              combination.add(eigenvectors(a, v), mode_coefficients[b][a]);
+            combination /= combination.linfty_norm();
+            message << " [" << Block<dim>::describe_rigid_body_mode(combination)
+                    << "]";
+          }
+        message << ": the loads exceed what friction and cohesion can carry, "
+                   "or the block has lost contact.";
+      }
+    return message.str();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactSolver<dim>::solve_increment(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+    const unsigned int                              increment,
+    const bool                                      from_last_solve)
+  {
+    // Data of this increment: Delta_F in the frames (condensed) or the
+    // loads of the monolithic system, and F_e.
+    external_displacement.reinit(n_pairs * dim);
+    if (monolithic)
+      monolithic->set_load(blocks);
+    for (unsigned int k = 0; k < n_pairs && !monolithic; ++k)
+      {
+        const auto    &pair = contact_pairs[k];
+        Tensor<1, dim> d;
+        for (const int sign : {-1, 1})
+          {
+            const auto &side = pair.side(sign);
+            for (const auto &node : side.nodes)
+              for (unsigned int c = 0; c < dim; ++c)
+                d[c] += sign * node.weight *
+                        blocks[side.block]->solution(node.dofs[c]);
+          }
+        for (unsigned int i = 0; i < dim; ++i)
+          external_displacement(k * dim + i) = pair.frame[i] * d;
+      }
+    external_resultant.assign(n_alpha_total, 0.);
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      {
+        const auto resultant = blocks[b]->external_load_resultant();
+        for (unsigned int a = 0; a < resultant.size(); ++a)
+          external_resultant[alpha_offset[b] + a] = resultant[a];
+      }
+
+    const auto single_change = [&](const Trial               &from,
+                                   const Trial               &to,
+                                   const std::vector<double> &violation) {
+      Trial              result = from;
+      const unsigned int worst =
+        std::distance(violation.begin(),
+                      std::max_element(violation.begin(), violation.end()));
+      result.state[worst]        = to.state[worst];
+      result.broken[worst]       = to.broken[worst];
+      result.tensile_slip[worst] = to.tensile_slip[worst];
+      result.slip_direction      = to.slip_direction;
+      result.direction_stiffness = to.direction_stiffness;
+      return result;
+    };
+
+    Trial                 trial  = (from_last_solve ? current : committed);
+    bool                  damped = false;
+    std::set<std::string> seen{signature(trial)};
+    Trial                 last_good, last_good_next;
+    std::vector<double>   last_good_violation;
+    bool                  have_good = false;
+
+    for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
+      {
+        Vector<double> solution, displacement;
+        if (!solve_trial(trial, solution, displacement))
+          {
+            if (!damped && have_good)
+              {
+                // Too many switches at once can lose a block's support;
+                // go back and switch one pair at a time.
+                damped = true;
+                seen.clear();
+                trial =
+                  single_change(last_good, last_good_next, last_good_violation);
+                seen.insert(signature(trial));
+                continue;
+              }
+            AssertThrow(false,
+                        Exceptions::ExcNoEquilibrium(
+                          "Load increment " + std::to_string(increment) +
+                          ": no equilibrium." + diagnose_singular(trial)));
+          }
+
+        std::vector<double> violation;
+        double              direction_change;
+        Trial               next =
+          check(trial, solution, displacement, violation, direction_change);
+
+        if (signature(next) == signature(trial) && direction_change < 1e-6)
+          {
+            current          = trial;
+            current_solution = solution;
+            current_displacement.assign(n_pairs, Tensor<1, dim>());
+            for (unsigned int k = 0; k < n_pairs; ++k)
+              for (unsigned int i = 0; i < dim; ++i)
+                current_displacement[k][i] = displacement(k * dim + i);
+            current.slip_direction = next.slip_direction;
+            return iteration;
+          }
+        have_good           = true;
+        last_good           = trial;
+        last_good_next      = next;
+        last_good_violation = violation;
+
+        if (damped && signature(next) != signature(trial))
+          next = single_change(trial, next, violation);
+        if (signature(next) != signature(trial) &&
+            seen.count(signature(next)) == 1)
+          {
+            if (!damped)
+              {
+                damped = true;
+                seen.clear();
+                next = single_change(trial, next, violation);
+              }
+            else
+              {
+                std::ostringstream pairs;
+                unsigned int       n_listed = 0;
+                for (unsigned int k = 0; k < n_pairs && n_listed < 10; ++k)
+                  if (next.state[k] != trial.state[k])
+                    {
+                      pairs << "\n      pair " << k << " at ("
+                            << contact_pairs[k].a.point
+                            << "): " << to_string(trial.state[k]) << " <-> "
+                            << to_string(next.state[k]);
+                      ++n_listed;
+                    }
+                AssertThrow(false,
+                            Exceptions::ExcIncrementNotConverged(
+                              "Load increment " + std::to_string(increment) +
+                              ": the contact states cycle after " +
+                              std::to_string(iteration) +
+                              " iterations, even switching one pair at a "
+                              "time. Pairs that keep switching:" +
+                              pairs.str() + "\n    Use more load increments."));
+              }
+          }
+        seen.insert(signature(next));
+        trial = next;
+      }
+    AssertThrow(false,
+                Exceptions::ExcIncrementNotConverged(
+                  "Load increment " + std::to_string(increment) +
+                  ": the contact states did not settle in " +
+                  std::to_string(max_iterations) +
+                  " iterations ('Contact/Maximum iterations'). "
+                  "Use more load increments."));
+    return max_iterations;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::commit()
+  {
+    // 3D: the direction a pair just slipped in is the first guess of the
+    // next increment's Newton iteration on the direction.
+    if (dim == 3)
+      for (unsigned int k = 0; k < n_pairs; ++k)
+        if (current.state[k] == ContactState::slip)
+          {
+            Tensor<1, dim> v =
+              current_displacement[k] - committed_displacement[k];
+            v[0] = 0.;
+            if (v.norm() > 0.)
+              current.slip_direction[k] = v / v.norm();
+          }
+    committed              = current;
+    committed_displacement = current_displacement;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactSolver<dim>::misalignment() const
+  {
+    double largest = 0.;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      if (current.state[k] == ContactState::slip)
+        {
+          Tensor<1, dim> v =
+            current_displacement[k] - committed_displacement[k];
+          v[0] = 0.;
+          if (v.norm() == 0.)
+            continue;
+          const double cosine =
+            std::min(1.,
+                     std::max(-1., v * current.slip_direction[k] / v.norm()));
+          largest = std::max(largest, std::acos(cosine) * 180. / numbers::PI);
+        }
+    return largest;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::forces_on_block(
+    const unsigned int                    b,
+    std::vector<types::global_dof_index> &dofs,
+    std::vector<double>                  &forces) const
+  {
+    dofs.clear();
+    forces.clear();
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        const Tensor<1, dim> r = force(k);
+        for (const int sign : {-1, 1})
+          {
+            const auto &side = contact_pairs[k].side(sign);
+            if (side.block != b)
+              continue;
+            for (const auto &node : side.nodes)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  dofs.push_back(node.dofs[c]);
+                  forces.push_back(sign * node.weight * r[c]);
+                }
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  ContactSolver<dim>::floating_amplitudes(const unsigned int b) const
+  {
+    std::vector<double> alpha(n_alpha[b]);
+    for (unsigned int a = 0; a < n_alpha[b]; ++a)
+      alpha[a] = current_solution(n_pairs * dim + alpha_offset[b] + a);
+    return alpha;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::block_solution(const unsigned int b,
+                                     const Block<dim>  &block,
+                                     Vector<double>    &solution) const
+  {
+    Assert(monolithic, ExcInternalError());
+    monolithic->block_solution(b, block, solution);
+  }
+
+
+
+  template <int dim>
+  const std::vector<ContactPair<dim>> &
+  ContactSolver<dim>::pairs() const
+  {
+    return contact_pairs;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactSolver<dim>::local_force(const unsigned int k) const
+  {
+    Tensor<1, dim> rho;
+    if (current_solution.size() > 0)
+      for (unsigned int d = 0; d < dim; ++d)
+        rho[d] = current_solution(k * dim + d);
+    return rho;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactSolver<dim>::force(const unsigned int k) const
+  {
+    // r = R^T rho
+    const Tensor<1, dim> rho = local_force(k);
+    Tensor<1, dim>       r;
+    for (unsigned int i = 0; i < dim; ++i)
+      r += rho[i] * contact_pairs[k].frame[i];
+    return r;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactSolver<dim>::gap(const unsigned int k) const
+  {
+    return contact_pairs[k].initial_gap + current_displacement[k][0];
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactSolver<dim>::slip(const unsigned int k) const
+  {
+    Tensor<1, dim> s = current_displacement[k];
+    s[0]             = 0.;
+    return s;
+  }
+
+
+
+  template <int dim>
+  ContactState
+  ContactSolver<dim>::state(const unsigned int k) const
+  {
+    return current.state[k];
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::broken(const unsigned int k) const
+  {
+    return current.broken[k];
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactSolver<dim>::count(const ContactState state) const
+  {
+    return std::count(current.state.begin(), current.state.end(), state);
+  }
+
+
+
+  template class ContactSolver<2>;
+  template class ContactSolver<3>;
+} // namespace mbfem

@@ -1,0 +1,513 @@
+#include <mbfem/block/boundary_conditions.h>
+#include <mbfem/interface/contact_interface.h>
+#include <mbfem/mesh/mesh.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <map>
+#include <sstream>
+
+namespace mbfem
+{
+  void
+  ContactParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    {
+      prm.declare_entry(
+        "Interfaces",
+        "",
+        Patterns::Anything(),
+        "Contact interfaces separated by ';'. 'blocks 1:2' is the surface "
+        "that blocks (material ids) 1 and 2 share in the mesh; 'boundaries "
+        "3:4' pairs the faces with boundary id 3 (side a) with those with "
+        "id 4 (side b), which may be separated by a gap. Pairs are formed "
+        "at the support points of the elements.");
+      prm.declare_entry("Friction coefficient",
+                        "0.5",
+                        Patterns::List(Patterns::Double(0.)),
+                        "mu of each interface (one value for all, or one "
+                        "per interface in order).");
+      prm.declare_entry("Cohesion",
+                        "0",
+                        Patterns::List(Patterns::Double(0.)),
+                        "Cohesion c (stress) of each interface: a pair "
+                        "sticks while |r_T| < c A + mu max(r_N, 0).");
+      prm.declare_entry(
+        "Tensile strength",
+        "0",
+        Patterns::List(Patterns::Double(0.)),
+        "Tensile strength sigma_t (stress) of each interface: a pair carries "
+        "tension up to sigma_t A; beyond it the pair breaks and keeps "
+        "sigma_t = c = 0 for the rest of the run.");
+      prm.declare_entry(
+        "Search distance",
+        "0",
+        Patterns::Double(0.),
+        "Largest initial gap between the nodes of a pair. 0: only "
+        "coincident nodes are paired.");
+      prm.declare_entry(
+        "Maximum iterations",
+        "100",
+        Patterns::Integer(1),
+        "Most contact-state iterations (assume states, solve, check, switch) "
+        "in one load increment before the run stops with a message.");
+      prm.declare_entry(
+        "Formulation",
+        "condensed",
+        Patterns::Selection("condensed|monolithic|both"),
+        "How the interface system is solved. condensed: the multi-body "
+        "method, each block's flexibility at its contact DoFs from unit "
+        "loads, the contact iteration on the pairs' forces and the floating "
+        "blocks' rigid-body amplitudes only. monolithic: the reference, all "
+        "blocks' displacements and the pairs' forces (Lagrange multipliers) "
+        "in one sparse system, factorised at every state iteration, with the "
+        "same stick/slip/open logic. both: the condensed solve gives the "
+        "results, the monolithic one runs beside it from the same load "
+        "increments; their pair states, forces (relative to the largest pair "
+        "force), gaps and slips (relative to the largest displacement) are "
+        "compared at every increment, and both are timed.");
+      prm.enter_subsection("Exact traction");
+      {
+        prm.declare_entry(
+          "Compute errors",
+          "false",
+          Patterns::Bool(),
+          "2D: at the end of the run, measure the pairs' normal traction p "
+          "and tangential traction q (force / tributary area, on side b, "
+          "tangent t = (-n_y, n_x)) against the functions below, as relative "
+          "L2 errors weighted by the pairs' areas, per interface (q relative to "
+          "the norm of p where the exact q is zero).");
+        prm.enter_subsection("Normal");
+        Functions::ParsedFunction<2>::declare_parameters(prm, 1);
+        prm.leave_subsection();
+        prm.enter_subsection("Tangential");
+        Functions::ParsedFunction<2>::declare_parameters(prm, 1);
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  namespace
+  {
+    std::vector<double>
+    per_interface(const std::string &text,
+                  const unsigned int n,
+                  const std::string &entry)
+    {
+      std::vector<double> values =
+        Utilities::string_to_double(Utilities::split_string_list(text));
+      if (values.size() == 1)
+        values.resize(n, values[0]);
+      AssertThrow(values.size() == n,
+                  ExcMessage("Contact/" + entry + " has " +
+                             std::to_string(values.size()) + " values for " +
+                             std::to_string(n) +
+                             " interfaces: give one, or one per interface."));
+      return values;
+    }
+  } // namespace
+
+
+
+  void
+  ContactParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    {
+      interfaces.clear();
+      for (const auto &entry :
+           Utilities::split_string_list(prm.get("Interfaces"), ';'))
+        {
+          InterfaceDeclaration declaration;
+          declaration.description = entry;
+          std::istringstream in(entry);
+          std::string        kind, sides;
+          in >> kind >> sides;
+          const auto ids = Utilities::split_string_list(sides, ':');
+          AssertThrow((kind == "blocks" || kind == "boundaries") &&
+                        ids.size() == 2,
+                      ExcMessage("Contact/Interfaces: cannot read '" + entry +
+                                 "'; write 'blocks 1:2' or 'boundaries 3:4'."));
+          declaration.by_blocks = (kind == "blocks");
+          declaration.side_a    = Utilities::string_to_int(ids[0]);
+          declaration.side_b    = Utilities::string_to_int(ids[1]);
+          interfaces.push_back(declaration);
+        }
+      const unsigned int n  = interfaces.size();
+      const auto         mu = per_interface(prm.get("Friction coefficient"),
+                                    std::max(n, 1u),
+                                    "Friction coefficient");
+      const auto         c =
+        per_interface(prm.get("Cohesion"), std::max(n, 1u), "Cohesion");
+      const auto st = per_interface(prm.get("Tensile strength"),
+                                    std::max(n, 1u),
+                                    "Tensile strength");
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          interfaces[i].joint.friction_coefficient = mu[i];
+          interfaces[i].joint.cohesion             = c[i];
+          interfaces[i].joint.tensile_strength     = st[i];
+        }
+      search_distance          = prm.get_double("Search distance");
+      max_iterations           = prm.get_integer("Maximum iterations");
+      const std::string choice = prm.get("Formulation");
+      formulation = (choice == "monolithic" ? Formulation::monolithic :
+                     choice == "both"       ? Formulation::both :
+                                              Formulation::condensed);
+      prm.enter_subsection("Exact traction");
+      {
+        compute_traction_errors = prm.get_bool("Compute errors");
+        prm.enter_subsection("Normal");
+        exact_normal_traction =
+          parse_function<2>(prm, 1, "Contact/Exact traction/Normal");
+        prm.leave_subsection();
+        prm.enter_subsection("Tangential");
+        exact_tangential_traction =
+          parse_function<2>(prm, 1, "Contact/Exact traction/Tangential");
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  namespace
+  {
+    /** A support point on one side of an interface, with its DoFs. */
+    template <int dim>
+    struct InterfaceNode
+    {
+      unsigned int                             block;
+      std::array<types::global_dof_index, dim> dofs;
+      Point<dim>                               point;
+      Tensor<1, dim>                           normal; // outward, summed
+      double                                   area = 0.;
+    };
+
+    /** The nodes of @p block on faces with @p boundary_id. */
+    template <int dim>
+    void
+    collect_nodes(const Block<dim>                &block,
+                  const unsigned int               block_index,
+                  const types::boundary_id         boundary_id,
+                  std::vector<InterfaceNode<dim>> &nodes)
+    {
+      const auto &fe = block.fe;
+      // Gauss-Lobatto points are FE_Q's support points: the quadrature
+      // weight at a node is its lumped share of the face.
+      const QGaussLobatto<dim - 1>         quadrature(fe.degree + 1);
+      FEFaceValues<dim>                    fe_face_values(block.mapping,
+                                       fe,
+                                       quadrature,
+                                       update_values | update_JxW_values |
+                                         update_normal_vectors |
+                                         update_quadrature_points);
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      std::map<types::global_dof_index, unsigned int> node_of_dof;
+
+      for (const auto &cell : block.dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == boundary_id)
+            {
+              fe_face_values.reinit(cell, f);
+              cell->get_dof_indices(dof_indices);
+              for (const unsigned int q :
+                   fe_face_values.quadrature_point_indices())
+                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                  {
+                    const auto [component, base] =
+                      fe.system_to_component_index(i);
+                    if (component != 0 ||
+                        std::abs(fe_face_values.shape_value_component(i, q, 0) -
+                                 1.) > 1e-10)
+                      continue;
+                    // Shape function i is 1 at quadrature point q: this is
+                    // its node.
+                    const auto [it, inserted] =
+                      node_of_dof.emplace(dof_indices[i], nodes.size());
+                    if (inserted)
+                      {
+                        InterfaceNode<dim> node;
+                        node.block = block_index;
+                        for (unsigned int d = 0; d < dim; ++d)
+                          node.dofs[d] =
+                            dof_indices[fe.component_to_system_index(d, base)];
+                        node.point = fe_face_values.quadrature_point(q);
+                        nodes.push_back(node);
+                      }
+                    nodes[it->second].area += fe_face_values.JxW(q);
+                    nodes[it->second].normal += fe_face_values.normal_vector(q);
+                  }
+            }
+    }
+
+
+
+    template <int dim>
+    Tensor<2, dim>
+    make_frame(const Tensor<1, dim> &normal)
+    {
+      Tensor<2, dim> frame;
+      frame[0] = normal / normal.norm();
+      if (dim == 2)
+        {
+          frame[1][0] = -frame[0][1];
+          frame[1][1] = frame[0][0];
+        }
+      else
+        {
+          // First tangent: normal x (the axis least aligned with it).
+          unsigned int axis = 0;
+          for (unsigned int d = 1; d < dim; ++d)
+            if (std::abs(frame[0][d]) < std::abs(frame[0][axis]))
+              axis = d;
+          Tensor<1, dim> e;
+          e[axis]           = 1.;
+          Tensor<1, dim> t1 = cross_product_3d(frame[0], e);
+          t1 /= t1.norm();
+          frame[1] = t1;
+          frame[2] = cross_product_3d(frame[0], t1);
+        }
+      return frame;
+    }
+
+
+
+    template <int dim>
+    std::string
+    list_points(const std::vector<Point<dim>> &points)
+    {
+      std::ostringstream out;
+      for (unsigned int i = 0; i < std::min<std::size_t>(points.size(), 8); ++i)
+        out << " (" << points[i] << ")";
+      if (points.size() > 8)
+        out << " ...";
+      return out.str();
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::vector<ContactPair<dim>>
+  find_contact_pairs(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+                     const ContactParameters                        &parameters,
+                     ConditionalOStream                             &pcout)
+  {
+    double size = 0.;
+    for (const auto &block : blocks)
+      size = std::max(size, GridTools::diameter(block->triangulation));
+    const double coincident = 1e-8 * size;
+
+    std::vector<ContactPair<dim>> pairs;
+    for (unsigned int k = 0; k < parameters.interfaces.size(); ++k)
+      {
+        const InterfaceDeclaration     &declaration = parameters.interfaces[k];
+        std::vector<InterfaceNode<dim>> side[2];
+        for (unsigned int s = 0; s < 2; ++s)
+          {
+            const unsigned int own =
+              (s == 0 ? declaration.side_a : declaration.side_b);
+            const unsigned int other =
+              (s == 0 ? declaration.side_b : declaration.side_a);
+            for (unsigned int b = 0; b < blocks.size(); ++b)
+              if (!declaration.by_blocks)
+                collect_nodes(*blocks[b], b, own, side[s]);
+              else if (blocks[b]->id == own)
+                collect_nodes(*blocks[b],
+                              b,
+                              interface_boundary_id(other),
+                              side[s]);
+            AssertThrow(!side[s].empty(),
+                        ExcMessage(
+                          "Contact interface '" + declaration.description +
+                          "': side " + std::to_string(own) +
+                          " has no faces in the mesh" +
+                          (declaration.by_blocks ?
+                             " shared with block " + std::to_string(other) :
+                             std::string(" with that boundary id")) +
+                          "."));
+          }
+
+        // Partner of every node on each side: among the nodes within the
+        // search distance, the one that faces it best, i.e. whose joining
+        // line deviates least from the common normal of the two surfaces
+        // (the bisector of the two outward normals). For coincident nodes
+        // this is the nearest one; across a gap between curved surfaces
+        // the nearest node can be a neighbour of the facing one.
+        const double reach = std::max(coincident, parameters.search_distance);
+        std::vector<unsigned int> nearest[2];
+        std::vector<double>       distance[2];
+        for (unsigned int s = 0; s < 2; ++s)
+          {
+            const auto &mine   = side[s];
+            const auto &theirs = side[1 - s];
+            nearest[s].assign(mine.size(), numbers::invalid_unsigned_int);
+            distance[s].assign(mine.size(), std::numeric_limits<double>::max());
+            for (unsigned int i = 0; i < mine.size(); ++i)
+              {
+                double best_offset = std::numeric_limits<double>::max();
+                const Tensor<1, dim> n_i =
+                  mine[i].normal / mine[i].normal.norm();
+                for (unsigned int j = 0; j < theirs.size(); ++j)
+                  {
+                    const Tensor<1, dim> d = theirs[j].point - mine[i].point;
+                    const double         length = d.norm();
+                    if (length > reach)
+                      continue;
+                    Tensor<1, dim> common =
+                      n_i - theirs[j].normal / theirs[j].normal.norm();
+                    common /= common.norm();
+                    const double offset =
+                      (length <= coincident ?
+                         0. :
+                         (d - (d * common) * common).norm());
+                    if (offset < best_offset - 1e-12 * reach ||
+                        (offset < best_offset + 1e-12 * reach &&
+                         length < distance[s][i]))
+                      {
+                        best_offset    = offset;
+                        nearest[s][i]  = j;
+                        distance[s][i] = length;
+                      }
+                  }
+              }
+          }
+
+        std::vector<Point<dim>> unmatched, ambiguous;
+        unsigned int            n_coincident = 0, n_gap = 0;
+        double                  total_area = 0.;
+        std::vector<bool>       b_used(side[1].size(), false);
+        for (unsigned int i = 0; i < side[0].size(); ++i)
+          {
+            const unsigned int j = nearest[0][i];
+            const double       d = distance[0][i];
+            if (j == numbers::invalid_unsigned_int)
+              {
+                unmatched.push_back(side[0][i].point);
+                continue;
+              }
+            if (nearest[1][j] != i)
+              {
+                ambiguous.push_back(side[0][i].point);
+                continue;
+              }
+            b_used[j]                   = true;
+            const InterfaceNode<dim> &a = side[0][i];
+            const InterfaceNode<dim> &b = side[1][j];
+
+            ContactPair<dim> pair;
+            pair.interface = k;
+            pair.a.block   = a.block;
+            pair.a.nodes   = {{a.dofs, 1.}};
+            pair.a.point   = a.point;
+            pair.b.block   = b.block;
+            pair.b.nodes   = {{b.dofs, 1.}};
+            pair.b.point   = b.point;
+            if (d <= coincident)
+              {
+                pair.frame       = make_frame(a.normal);
+                pair.initial_gap = 0.;
+                ++n_coincident;
+              }
+            else
+              {
+                pair.frame       = make_frame<dim>(b.point - a.point);
+                pair.initial_gap = d;
+                ++n_gap;
+              }
+            pair.area  = 0.5 * (a.area + b.area);
+            pair.joint = declaration.joint;
+            total_area += pair.area;
+            pairs.push_back(pair);
+          }
+        for (unsigned int j = 0; j < side[1].size(); ++j)
+          if (!b_used[j])
+            unmatched.push_back(side[1][j].point);
+
+        AssertThrow(unmatched.empty() && ambiguous.empty(),
+                    ExcMessage(
+                      "Contact interface '" + declaration.description +
+                      "': " + std::to_string(unmatched.size()) +
+                      " node(s) have no partner within the search distance " +
+                      std::to_string(parameters.search_distance) +
+                      (unmatched.empty() ? "" : ":" + list_points(unmatched)) +
+                      "; " + std::to_string(ambiguous.size()) +
+                      " node(s) are not the nearest of their nearest node" +
+                      (ambiguous.empty() ? "" : ":" + list_points(ambiguous)) +
+                      ". Both sides need nodes facing each other one to one "
+                      "(matching meshes), and 'Contact/Search distance' at "
+                      "least the largest initial gap."));
+
+        pcout << "  interface " << k + 1 << " (" << declaration.description
+              << "): " << n_coincident + n_gap << " pairs (" << n_coincident
+              << " coincident, " << n_gap << " with a gap), area " << total_area
+              << ", mu = " << declaration.joint.friction_coefficient
+              << ", c = " << declaration.joint.cohesion
+              << ", sigma_t = " << declaration.joint.tensile_strength << "\n";
+      }
+
+    // A pair whose two nodes are both fixed in one global direction that
+    // is oblique to the pair's frame (an inclined fault meeting a roller
+    // boundary) has fewer free relative motions than contact conditions.
+    // It is tied (ContactPair::tied), and said so.
+    unsigned int n_tied     = 0;
+    const auto   fixed_side = [&](const PairSide<dim> &side,
+                                const unsigned int   c) {
+      const auto &constraints = blocks[side.block]->get_physical_constraints();
+      return std::all_of(
+        side.nodes.begin(), side.nodes.end(), [&](const auto &node) {
+          return constraints.is_constrained(node.dofs[c]) &&
+                 constraints.get_constraint_entries(node.dofs[c])->empty();
+        });
+    };
+    for (auto &pair : pairs)
+      {
+        bool oblique_support = false;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const bool fixed   = fixed_side(pair.a, c) && fixed_side(pair.b, c);
+            bool       aligned = false;
+            for (unsigned int i = 0; i < dim; ++i)
+              aligned |= std::abs(std::abs(pair.frame[i][c]) - 1.) < 1e-10;
+            oblique_support |= fixed && !aligned;
+          }
+        if (oblique_support)
+          {
+            ++n_tied;
+            pair.tied  = true;
+            pair.frame = unit_symmetric_tensor<dim>();
+          }
+      }
+    if (n_tied > 0)
+      pcout << "  " << n_tied
+            << " pair(s) tied: both nodes on a support fixing a direction "
+               "oblique to the interface; they stick in the free direction "
+               "and the support carries the rest\n";
+    return pairs;
+  }
+
+
+
+  template struct ContactPair<2>;
+  template struct ContactPair<3>;
+  template std::vector<ContactPair<2>>
+  find_contact_pairs(const std::vector<std::unique_ptr<Block<2>>> &,
+                     const ContactParameters &,
+                     ConditionalOStream &);
+  template std::vector<ContactPair<3>>
+  find_contact_pairs(const std::vector<std::unique_ptr<Block<3>>> &,
+                     const ContactParameters &,
+                     ConditionalOStream &);
+} // namespace mbfem

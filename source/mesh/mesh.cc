@@ -1,0 +1,378 @@
+#include <mbfem/mesh/mesh.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace mbfem
+{
+  void
+  MeshParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      prm.declare_entry(
+        "Source",
+        "generator",
+        Patterns::Selection("gmsh|generator"),
+        "Where the mesh comes from. 'gmsh': read 'Mesh file' (a gmsh .msh "
+        "file; physical groups of cells give the material id, i.e. the "
+        "block, and physical groups of faces give boundary ids). "
+        "'generator': call the deal.II GridGenerator function named in "
+        "'Generator name' with 'Generator arguments'.");
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::Anything(),
+                        "Path of the gmsh .msh file, for Source = gmsh. A "
+                        "relative path is taken from the folder of the "
+                        "parameter file.");
+      prm.declare_entry(
+        "Generator name",
+        "subdivided_hyper_rectangle",
+        Patterns::Anything(),
+        "Name of a deal.II GridGenerator function, e.g. "
+        "subdivided_hyper_rectangle, hyper_rectangle, quarter_hyper_shell, "
+        "hyper_shell, plate_with_a_hole (see the deal.II documentation of "
+        "GridGenerator::generate_from_name_and_arguments).");
+      prm.declare_entry(
+        "Generator arguments",
+        "5,1 : 0,0 : 10,2 : true",
+        Patterns::Anything(),
+        "Arguments of the generator function, separated by ':' in the order "
+        "of its C++ signature, points as comma-separated coordinates. The "
+        "default makes a 10 x 2 rectangle of 5 x 1 cells with boundary ids "
+        "0 (x = 0), 1 (x = 10), 2 (y = 0), 3 (y = 2).");
+      prm.declare_entry(
+        "Block id function",
+        "",
+        Patterns::Anything(),
+        "Splits the mesh into blocks: an expression of the cell centre "
+        "(x, y(, z)) whose value, rounded, is the cell's material id, i.e. "
+        "its block; e.g. '(y > 1) + (y > 2)' cuts a column into three "
+        "stacked blocks. Empty: a gmsh mesh keeps the material ids of its "
+        "physical groups, a generated mesh is one block (id 0) whatever ids "
+        "the generator gave its cells (colorize=true numbers cells by "
+        "quadrant).");
+      prm.declare_entry(
+        "Circular boundaries",
+        "",
+        Patterns::Anything(),
+        "Faces that lie on a circle (2D) or sphere (3D), as 'id: centre' "
+        "separated by ';', e.g. '3: 0,-8; 4: 0,8'. Refinement puts new "
+        "vertices on the circle and MappingQ curves the cells, so a gmsh "
+        "mesh of a disk stays round. deal.II's generators set their own.");
+      prm.declare_entry("Initial global refinement",
+                        "0",
+                        Patterns::Integer(0, 12),
+                        "Number of times every cell is split (in two in each "
+                        "direction) after the mesh is made.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  MeshParameters::parse_parameters(ParameterHandler  &prm,
+                                   const std::string &input_folder)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      source              = prm.get("Source");
+      mesh_file           = prm.get("Mesh file");
+      generator_name      = prm.get("Generator name");
+      generator_arguments = prm.get("Generator arguments");
+      initial_refinement  = prm.get_integer("Initial global refinement");
+      block_id_function   = prm.get("Block id function");
+      circular_boundaries.clear();
+      for (const auto &entry :
+           Utilities::split_string_list(prm.get("Circular boundaries"), ';'))
+        {
+          const auto parts = Utilities::split_string_list(entry, ':');
+          AssertThrow(parts.size() == 2,
+                      ExcMessage("Mesh/Circular boundaries: cannot read '" +
+                                 entry + "'; write 'id: x,y(,z)'."));
+          circular_boundaries[Utilities::string_to_int(parts[0])] =
+            Utilities::string_to_double(
+              Utilities::split_string_list(parts[1], ','));
+        }
+    }
+    prm.leave_subsection();
+
+    if (source == "gmsh")
+      {
+        AssertThrow(!mesh_file.empty(),
+                    ExcMessage("Mesh/Source is gmsh but 'Mesh/Mesh file' is "
+                               "empty: name the .msh file to read."));
+        if (mesh_file.front() != '/' && !input_folder.empty())
+          mesh_file = input_folder + "/" + mesh_file;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  create_mesh(const MeshParameters &parameters,
+              Triangulation<dim>   &triangulation)
+  {
+    if (parameters.source == "gmsh")
+      {
+        std::ifstream in(parameters.mesh_file);
+        AssertThrow(in.good(),
+                    ExcMessage("Cannot open the mesh file <" +
+                               parameters.mesh_file +
+                               "> named by 'Mesh/Mesh file'."));
+        GridIn<dim> grid_in(triangulation);
+        try
+          {
+            grid_in.read_msh(in);
+          }
+        catch (ExceptionBase &e)
+          {
+            std::ostringstream message;
+            e.print_info(message);
+            AssertThrow(false,
+                        ExcMessage("Could not read the gmsh file <" +
+                                   parameters.mesh_file + "> as a " +
+                                   std::to_string(dim) +
+                                   "D mesh: " + message.str()));
+          }
+      }
+    else
+      {
+        try
+          {
+            GridGenerator::generate_from_name_and_arguments(
+              triangulation,
+              parameters.generator_name,
+              parameters.generator_arguments);
+          }
+        catch (std::exception &e)
+          {
+            AssertThrow(
+              false,
+              ExcMessage("Mesh/Generator name = '" + parameters.generator_name +
+                         "' with Mesh/Generator arguments = '" +
+                         parameters.generator_arguments + "' did not make a " +
+                         std::to_string(dim) + "D mesh: " + e.what()));
+          }
+      }
+    AssertThrow(triangulation.all_reference_cells_are_hyper_cube(),
+                ExcMessage(
+                  "The mesh " +
+                  (parameters.source == "gmsh" ?
+                     "<" + parameters.mesh_file + "> " :
+                     std::string()) +
+                  "has triangles or tetrahedra; mbfem's FE_Q elements "
+                  "need quadrilaterals or hexahedra (in gmsh: "
+                  "Mesh.RecombineAll = 1 and Mesh.SubdivisionAlgorithm "
+                  "= 1 or 2)."));
+    if (!parameters.block_id_function.empty())
+      {
+        FunctionParser<dim> block_id;
+        try
+          {
+            block_id.initialize(FunctionParser<dim>::default_variable_names(),
+                                parameters.block_id_function,
+                                {});
+            block_id.value(Point<dim>());
+          }
+        catch (ExceptionBase &e)
+          {
+            std::ostringstream message;
+            e.print_info(message);
+            AssertThrow(false,
+                        ExcMessage("Mesh/Block id function '" +
+                                   parameters.block_id_function +
+                                   "' cannot be parsed: " + message.str()));
+          }
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            const double id = std::round(block_id.value(cell->center()));
+            AssertThrow(id >= 0. && id < 10000.,
+                        ExcMessage("Mesh/Block id function gives " +
+                                   std::to_string(id) + " at (" +
+                                   Utilities::to_string(cell->center()[0]) +
+                                   ", ...): block ids are 0 to 9999."));
+            cell->set_material_id(static_cast<types::material_id>(id));
+          }
+      }
+    else if (parameters.source == "generator")
+      for (const auto &cell : triangulation.active_cell_iterators())
+        cell->set_material_id(0);
+
+    types::manifold_id manifold = 100;
+    for (const auto &[id, centre] : parameters.circular_boundaries)
+      {
+        AssertThrow(centre.size() == dim,
+                    ExcMessage("Mesh/Circular boundaries: the centre for id " +
+                               std::to_string(id) + " needs " +
+                               std::to_string(dim) + " coordinates."));
+        Point<dim> c;
+        for (unsigned int d = 0; d < dim; ++d)
+          c[d] = centre[d];
+        bool found = false;
+        for (const auto &face : triangulation.active_face_iterators())
+          if (face->at_boundary() && face->boundary_id() == id)
+            {
+              face->set_all_manifold_ids(manifold);
+              found = true;
+            }
+        AssertThrow(found,
+                    ExcMessage("Mesh/Circular boundaries: the mesh has no "
+                               "face with boundary id " +
+                               std::to_string(id) + "."));
+        triangulation.set_manifold(manifold, SphericalManifold<dim>(c));
+        ++manifold;
+      }
+    triangulation.refine_global(parameters.initial_refinement);
+  }
+
+
+
+  template <int dim>
+  std::vector<types::material_id>
+  block_ids(const Triangulation<dim> &mesh)
+  {
+    std::set<types::material_id> ids;
+    for (const auto &cell : mesh.active_cell_iterators())
+      ids.insert(cell->material_id());
+    return std::vector<types::material_id>(ids.begin(), ids.end());
+  }
+
+
+
+  template <int dim>
+  void
+  extract_block(const Triangulation<dim> &mesh,
+                const types::material_id  id,
+                Triangulation<dim>       &block)
+  {
+    std::map<unsigned int, unsigned int> vertex_number;
+    std::vector<Point<dim>>              vertices;
+    std::vector<CellData<dim>>           cells;
+    SubCellData                          faces;
+    std::set<unsigned int>               interior_faces;
+
+    const auto number = [&](const unsigned int global) {
+      const auto [it, inserted] =
+        vertex_number.emplace(global, vertices.size());
+      if (inserted)
+        vertices.push_back(mesh.get_vertices()[global]);
+      return it->second;
+    };
+
+    for (const auto &cell : mesh.active_cell_iterators())
+      if (cell->material_id() == id)
+        {
+          CellData<dim> data(cell->n_vertices());
+          for (const unsigned int v : cell->vertex_indices())
+            data.vertices[v] = number(cell->vertex_index(v));
+          data.material_id = id;
+          data.manifold_id = cell->manifold_id();
+          cells.push_back(data);
+
+          for (const unsigned int f : cell->face_indices())
+            {
+              const auto         face = cell->face(f);
+              types::boundary_id boundary_id;
+              if (face->at_boundary())
+                boundary_id = face->boundary_id();
+              else if (cell->neighbor(f)->material_id() != id)
+                boundary_id =
+                  interface_boundary_id(cell->neighbor(f)->material_id());
+              else if (face->manifold_id() != numbers::flat_manifold_id &&
+                       interior_faces.insert(face->index()).second)
+                // An interior face keeps its manifold: without it, it
+                // would be flat in the block while its cells are curved,
+                // and MappingQ(p >= 2) in 3D gives a wrong geometry.
+                boundary_id = numbers::internal_face_boundary_id;
+              else
+                continue;
+
+              CellData<dim - 1> face_data(face->n_vertices());
+              for (const unsigned int v : face->vertex_indices())
+                face_data.vertices[v] = number(face->vertex_index(v));
+              face_data.boundary_id = boundary_id;
+              face_data.manifold_id = face->manifold_id();
+              if constexpr (dim == 2)
+                faces.boundary_lines.push_back(face_data);
+              else
+                {
+                  faces.boundary_quads.push_back(face_data);
+                  // Edges of curved faces need their manifold too.
+                  for (const unsigned int l : face->line_indices())
+                    if (face->line(l)->manifold_id() !=
+                        numbers::flat_manifold_id)
+                      {
+                        CellData<1> line(2);
+                        line.vertices[0] =
+                          number(face->line(l)->vertex_index(0));
+                        line.vertices[1] =
+                          number(face->line(l)->vertex_index(1));
+                        line.boundary_id = numbers::internal_face_boundary_id;
+                        line.manifold_id = face->line(l)->manifold_id();
+                        faces.boundary_lines.push_back(line);
+                      }
+                }
+            }
+        }
+
+    block.clear();
+    block.create_triangulation(vertices, cells, faces);
+    // Every manifold the block's cells, faces and edges refer to (the
+    // triangulation's own list may omit ids that only faces carry, and an
+    // id without its manifold crashes MappingQ in a Release build).
+    std::set<types::manifold_id> used;
+    for (const auto &data : cells)
+      used.insert(data.manifold_id);
+    for (const auto &data : faces.boundary_lines)
+      used.insert(data.manifold_id);
+    for (const auto &data : faces.boundary_quads)
+      used.insert(data.manifold_id);
+    for (const auto manifold : used)
+      if (manifold != numbers::flat_manifold_id)
+        block.set_manifold(manifold, mesh.get_manifold(manifold));
+  }
+
+
+
+  template <int dim>
+  std::set<types::boundary_id>
+  boundary_ids_of(const Triangulation<dim> &triangulation)
+  {
+    const std::vector<types::boundary_id> ids =
+      triangulation.get_boundary_ids();
+    return std::set<types::boundary_id>(ids.begin(), ids.end());
+  }
+
+
+
+  template void
+  create_mesh(const MeshParameters &, Triangulation<2> &);
+  template void
+  create_mesh(const MeshParameters &, Triangulation<3> &);
+  template std::vector<types::material_id>
+  block_ids(const Triangulation<2> &);
+  template std::vector<types::material_id>
+  block_ids(const Triangulation<3> &);
+  template void
+  extract_block(const Triangulation<2> &,
+                types::material_id,
+                Triangulation<2> &);
+  template void
+  extract_block(const Triangulation<3> &,
+                types::material_id,
+                Triangulation<3> &);
+  template std::set<types::boundary_id>
+  boundary_ids_of(const Triangulation<2> &);
+  template std::set<types::boundary_id>
+  boundary_ids_of(const Triangulation<3> &);
+} // namespace mbfem
