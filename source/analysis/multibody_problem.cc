@@ -1,6 +1,8 @@
 #include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/base/exceptions.h>
 #include <mbfem/base/parameters.h>
+#include <mbfem/output/interface_report.h>
+#include <mbfem/output/pair_output.h>
 
 #include <deal.II/base/timer.h>
 
@@ -130,7 +132,29 @@ namespace mbfem
   {
     make_blocks();
     setup_blocks();
+    print_blocks();
+    make_contact();
+    make_writers();
 
+    // With an in-situ stress, increment 0 is the geostatic stage at t = 0:
+    // nothing released yet, zero displacement, the interfaces in the
+    // compression of sigma_0.
+    const unsigned int first_increment =
+      parameters.in_situ_stress.enabled ? 0 : 1;
+    for (unsigned int k = first_increment;
+         k <= parameters.load_history.n_increments;
+         ++k)
+      do_increment(k);
+
+    print_run_summary();
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_blocks() const
+  {
     const auto &first = *blocks.front();
     pcout << "mbfem: "
           << (blocks.size() == 1 ?
@@ -157,11 +181,15 @@ namespace mbfem
             pcout << ", held by contact\n";
           }
       }
+  }
 
-    std::vector<ContactPair<dim>> pairs;
-    if (!parameters.contact.interfaces.empty())
-      pairs = find_contact_pairs(blocks, parameters.contact, pcout);
 
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::check_blocks_held(
+    const std::vector<ContactPair<dim>> &pairs) const
+  {
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
         const auto  free_modes = blocks[b]->free_rigid_body_modes();
@@ -184,6 +212,18 @@ namespace mbfem
             "Prescribe the displacement components that remove "
             "them, or declare its interfaces in 'Contact/Interfaces'."));
       }
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::make_contact()
+  {
+    std::vector<ContactPair<dim>> pairs;
+    if (!parameters.contact.interfaces.empty())
+      pairs = find_contact_pairs(blocks, parameters.contact, pcout);
+    check_blocks_held(pairs);
 
     const ContactParameters &contact_parameters = parameters.contact;
     AssertThrow(!parameters.plasticity.newton || pairs.empty() ||
@@ -193,166 +233,153 @@ namespace mbfem
                   "contact formulation only (its tangent flexibilities); "
                   "set 'Contact/Formulation = condensed' or use the "
                   "initial-stress method."));
-    if (!pairs.empty())
+    if (pairs.empty())
+      return;
+    const auto make_solver = [&](const ContactFormulation formulation) {
+      auto solver =
+        std::make_unique<ContactSolver<dim>>(pairs,
+                                             contact_parameters.max_iterations,
+                                             formulation,
+                                             parameters.linear_solver.package);
+      solver->setup(blocks);
+      return solver;
+    };
+    if (contact_parameters.runs_condensed())
       {
-        const std::string &package = parameters.linear_solver.package;
-        if (contact_parameters.runs_condensed())
-          {
-            TimerOutput::Scope t(timer, "flexibility");
-            Timer              clock;
-            contact = std::make_unique<ContactSolver<dim>>(
-              pairs,
-              parameters.contact.max_iterations,
-              ContactFormulation::condensed,
-              package);
-            contact->setup(blocks);
-            condensed_seconds += clock.wall_time();
-          }
-        if (contact_parameters.runs_monolithic())
-          {
-            TimerOutput::Scope t(timer, "monolithic assembly");
-            Timer              clock;
-            auto               solver = std::make_unique<ContactSolver<dim>>(
-              pairs,
-              parameters.contact.max_iterations,
-              ContactFormulation::monolithic,
-              package);
-            solver->setup(blocks);
-            monolithic_seconds += clock.wall_time();
-            (contact_parameters.runs_condensed() ? reference : contact) =
-              std::move(solver);
-          }
-        pcout << "  contact formulation: "
-              << (!contact_parameters.runs_monolithic() ? "condensed" :
-                  !contact_parameters.runs_condensed()  ? "monolithic" :
-                                                          "both");
-        if (contact_parameters.runs_monolithic())
-          {
-            types::global_dof_index n = pairs.size() * dim;
-            for (const auto &block : blocks)
-              n += block->n_dofs();
-            pcout << " (monolithic system of " << n << " unknowns)";
-          }
-        pcout << "\n";
+        TimerOutput::Scope t(timer, "flexibility");
+        Timer              clock;
+        contact = make_solver(ContactFormulation::condensed);
+        condensed_seconds += clock.wall_time();
       }
+    if (contact_parameters.runs_monolithic())
+      {
+        TimerOutput::Scope t(timer, "monolithic assembly");
+        Timer              clock;
+        (contact ? reference : contact) =
+          make_solver(ContactFormulation::monolithic);
+        monolithic_seconds += clock.wall_time();
+      }
+    pcout << "  contact formulation: "
+          << (!contact_parameters.runs_monolithic() ? "condensed" :
+              !contact_parameters.runs_condensed()  ? "monolithic" :
+                                                      "both");
+    if (contact_parameters.runs_monolithic())
+      {
+        types::global_dof_index n = pairs.size() * dim;
+        for (const auto &block : blocks)
+          n += block->n_dofs();
+        pcout << " (monolithic system of " << n << " unknowns)";
+      }
+    pcout << "\n";
+  }
 
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::make_writers()
+  {
     std::filesystem::create_directories(parameters.output.directory);
-    std::unique_ptr<OutputWriter> writer;
-    std::unique_ptr<OutputWriter> pair_writer;
-    if (parameters.output.write_vtu)
+    if (!parameters.output.write_vtu)
+      return;
+    writer = std::make_unique<OutputWriter>(parameters.output);
+    if (contact)
       {
-        writer = std::make_unique<OutputWriter>(parameters.output);
-        if (contact)
-          {
-            OutputParameters pair_output = parameters.output;
-            pair_output.base_name += "-pairs";
-            pair_writer = std::make_unique<OutputWriter>(pair_output);
-          }
+        OutputParameters pair_output = parameters.output;
+        pair_output.base_name += "-pairs";
+        pair_writer = std::make_unique<OutputWriter>(pair_output);
       }
+  }
 
-    const LoadHistory &history = parameters.load_history;
-    // With an in-situ stress, increment 0 is the geostatic stage at t = 0:
-    // nothing released yet, zero displacement, the interfaces in the
-    // compression of sigma_0.
-    const unsigned int first_increment =
-      parameters.in_situ_stress.enabled ? 0 : 1;
-    for (unsigned int k = first_increment; k <= history.n_increments; ++k)
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::do_increment(const unsigned int k)
+  {
+    const double       time       = parameters.load_history.time(k);
+    unsigned int       iterations = 0, reference_iterations = 0;
+    PlasticUpdate      plastic_update;
+    const unsigned int plastic_iterations =
+      solve_increment(k, iterations, reference_iterations, plastic_update);
+    for (const auto &block : blocks)
+      block->commit_plastic_strain();
+    if (dim == 3 && contact && contact->count(ContactState::slip) > 0)
+      pcout << "    friction against the slip made: largest angle "
+            << std::fixed << std::setprecision(1) << contact->misalignment()
+            << " degrees" << std::defaultfloat << std::setprecision(6) << "\n";
+    for (const auto &block : blocks)
+      AssertThrow(std::isfinite(block->solution.l2_norm()),
+                  ExcMessage(
+                    "Increment " + std::to_string(k) +
+                    " (t = " + std::to_string(time) +
+                    "): the displacement of " + block->name() +
+                    " is not finite. A load or prescribed displacement "
+                    "function gives NaN or inf at this time. Results of "
+                    "the earlier increments are in " +
+                    parameters.output.directory + "."));
+
+    print_increment(k, time, iterations);
+    if (parameters.plasticity.enabled)
+      print_plasticity(plastic_iterations, plastic_update);
+    if (reference)
+      compare_formulations();
+    std::string pair_file;
+    if (contact)
       {
-        const double                time       = history.time(k);
-        unsigned int                iterations = 0, reference_iterations = 0;
-        const PlasticityParameters &plasticity         = parameters.plasticity;
-        unsigned int                plastic_iterations = 0;
-        PlasticUpdate               plastic_update;
-        plastic_iterations =
-          solve_increment(k, iterations, reference_iterations, plastic_update);
-        for (const auto &block : blocks)
-          block->commit_plastic_strain();
-        if (dim == 3 && contact && contact->count(ContactState::slip) > 0)
-          pcout << "    friction against the slip made: largest angle "
-                << std::fixed << std::setprecision(1) << contact->misalignment()
-                << " degrees" << std::defaultfloat << std::setprecision(6)
-                << "\n";
-        for (const auto &block : blocks)
-          AssertThrow(std::isfinite(block->solution.l2_norm()),
-                      ExcMessage(
-                        "Increment " + std::to_string(k) +
-                        " (t = " + std::to_string(time) +
-                        "): the displacement of " + block->name() +
-                        " is not finite. A load or prescribed displacement "
-                        "function gives NaN or inf at this time. Results of "
-                        "the earlier increments are in " +
-                        parameters.output.directory + "."));
-
-        print_increment(k, time, iterations);
-        if (plasticity.enabled)
-          pcout << "    plasticity: " << plastic_iterations
-                << " iteration(s), yielded " << plastic_update.n_yielded
-                << " of " << plastic_update.n_points << " quadrature points ("
-                << (dim == 2 ? "area " : "volume ") << std::scientific
-                << std::setprecision(6) << plastic_update.yielded_measure
-                << "), largest equivalent plastic strain "
-                << plastic_update.max_equivalent << std::defaultfloat
-                << std::setprecision(6) << "\n";
+        pair_file = write_pair_files(*contact, parameters.output, k, time);
+        write_summary(k, time, iterations, reference_iterations);
+        contact->commit();
         if (reference)
-          compare_formulations();
-        std::string pair_file;
-        if (contact)
-          {
-            pair_file = write_pairs(k, time);
-            write_summary(k, time, iterations, reference_iterations);
-            contact->commit();
-            if (reference)
-              reference->commit();
-          }
-        if (writer)
-          {
-            TimerOutput::Scope       t(timer, "output");
-            std::vector<std::string> files;
-            for (unsigned int b = 0; b < blocks.size(); ++b)
-              files.push_back(
-                writer->write_block(*blocks[b], blocks[b]->id, k));
-            writer->add_step(time, files);
-            if (pair_writer)
-              pair_writer->add_step(time, {pair_file});
-          }
+          reference->commit();
       }
+    if (writer)
+      {
+        TimerOutput::Scope       t(timer, "output");
+        std::vector<std::string> files;
+        for (const auto &block : blocks)
+          files.push_back(writer->write_block(*block, block->id, k));
+        writer->add_step(time, files);
+        if (pair_writer)
+          pair_writer->add_step(time, {pair_file});
+      }
+  }
 
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_plasticity(
+    const unsigned int   plastic_iterations,
+    const PlasticUpdate &plastic_update) const
+  {
+    pcout << "    plasticity: " << plastic_iterations
+          << " iteration(s), yielded " << plastic_update.n_yielded << " of "
+          << plastic_update.n_points << " quadrature points ("
+          << (dim == 2 ? "area " : "volume ") << std::scientific
+          << std::setprecision(6) << plastic_update.yielded_measure
+          << "), largest equivalent plastic strain "
+          << plastic_update.max_equivalent << std::defaultfloat
+          << std::setprecision(6) << "\n";
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_run_summary()
+  {
     if (newton_suspensions > 0)
       pcout << "  Newton's tangent system had no solution in "
             << newton_suspensions << " step(s); the elastic stiffness "
             << "(initial-stress method) took over in them\n";
     if (contact)
-      print_interface_summary();
+      print_interface_summary(*contact, parameters.contact, pcout);
     if (reference)
-      {
-        const bool agree =
-          state_differences == 0 && largest_force_difference <= 1e-6 &&
-          largest_gap_difference <= 1e-6 && largest_slip_difference <= 1e-6;
-        pcout << "  condensed against monolithic over all increments: "
-              << "states equal at every increment "
-              << (state_differences == 0 ? "yes" : "NO")
-              << "; largest differences (relative): forces "
-              << format_difference(largest_force_difference) << ", gaps "
-              << format_difference(largest_gap_difference) << ", slips "
-              << format_difference(largest_slip_difference) << "; within 1e-6 "
-              << (agree ? "yes" : "NO") << "\n";
-      }
+      print_comparison_summary();
     if (contact && !parameters.run.test_mode)
-      {
-        pcout << "  time of the contact formulation(s) alone (wall, s): ";
-        if (parameters.contact.runs_condensed())
-          pcout << "condensed " << std::setprecision(3) << condensed_seconds
-                << " (factorisation, flexibility, load response, contact "
-                   "iterations, recovery)";
-        if (parameters.contact.runs_condensed() &&
-            parameters.contact.runs_monolithic())
-          pcout << "; ";
-        if (parameters.contact.runs_monolithic())
-          pcout << "monolithic " << std::setprecision(3) << monolithic_seconds
-                << " (assembly, contact iterations with one sparse LU "
-                   "each, recovery)";
-        pcout << std::setprecision(6) << "\n";
-      }
+      print_formulation_times();
+    const LoadHistory &history = parameters.load_history;
     if (parameters.exact_solution.enabled)
       print_errors(history.time(history.n_increments));
 
@@ -360,14 +387,55 @@ namespace mbfem
       pcout << "  wrote " << history.n_increments << " VTU file(s)"
             << (blocks.size() > 1 ? " per block" : "") << " indexed by "
             << writer->pvd_file() << "\n";
+    const std::string base =
+      parameters.output.directory + "/" + parameters.output.base_name;
     if (contact && !parameters.run.test_mode)
-      pcout << "  contact pairs per increment in "
-            << parameters.output.directory << "/" << parameters.output.base_name
-            << "-pairs-*.csv, a line per increment in "
-            << parameters.output.directory << "/" << parameters.output.base_name
+      pcout << "  contact pairs per increment in " << base
+            << "-pairs-*.csv, a line per increment in " << base
             << "-summary.csv\n";
     if (!parameters.run.test_mode)
       timer.print_summary();
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_comparison_summary() const
+  {
+    const bool agree =
+      state_differences == 0 && largest_force_difference <= 1e-6 &&
+      largest_gap_difference <= 1e-6 && largest_slip_difference <= 1e-6;
+    pcout << "  condensed against monolithic over all increments: "
+          << "states equal at every increment "
+          << (state_differences == 0 ? "yes" : "NO")
+          << "; largest differences (relative): forces "
+          << format_difference(largest_force_difference) << ", gaps "
+          << format_difference(largest_gap_difference) << ", slips "
+          << format_difference(largest_slip_difference) << "; within 1e-6 "
+          << (agree ? "yes" : "NO") << "\n";
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_formulation_times() const
+  {
+    const ContactParameters &contact_parameters = parameters.contact;
+    pcout << "  time of the contact formulation(s) alone (wall, s): ";
+    if (contact_parameters.runs_condensed())
+      pcout << "condensed " << std::setprecision(3) << condensed_seconds
+            << " (factorisation, flexibility, load response, contact "
+               "iterations, recovery)";
+    if (contact_parameters.runs_condensed() &&
+        contact_parameters.runs_monolithic())
+      pcout << "; ";
+    if (contact_parameters.runs_monolithic())
+      pcout << "monolithic " << std::setprecision(3) << monolithic_seconds
+            << " (assembly, contact iterations with one sparse LU "
+               "each, recovery)";
+    pcout << std::setprecision(6) << "\n";
   }
 
 
@@ -552,31 +620,13 @@ namespace mbfem
         // Newton: the contact states of the last pass start the next.
         const bool from_last_solve =
           plasticity.newton && plastic_iterations > 0;
-        bool solved = false;
-        if (newton)
-          try
-            {
-              update_tangent_stiffness();
-              solve_pass(
-                k, time, iterations, reference_iterations, from_last_solve);
-              solved = true;
-            }
-          catch (const Exceptions::ExcNoEquilibrium &e)
-            {
-              newton = give_way_to_initial_stress(e, plastic_iterations);
-            }
-          catch (const Exceptions::ExcSingularMatrix &e)
-            {
-              newton = give_way_to_initial_stress(e, plastic_iterations);
-            }
-        if (!solved)
-          {
-            // (Reassembles only after a suspension: the elastic stiffness.)
-            update_tangent_stiffness();
-            solve_pass(
-              k, time, iterations, reference_iterations, from_last_solve);
-          }
-
+        newton = pass_with_fallback(k,
+                                    time,
+                                    iterations,
+                                    reference_iterations,
+                                    from_last_solve,
+                                    newton,
+                                    plastic_iterations);
         if (!plasticity.enabled)
           break;
         ++plastic_iterations;
@@ -594,20 +644,10 @@ namespace mbfem
         const double rate =
           (previous_change > 0. ? change / previous_change : 0.);
         previous_change = change;
-        // Progress on long runs: a line every 100 iterations, or every
-        // Newton iteration (few, each with new factorisations).
-        if (newton && !parameters.run.test_mode)
-          pcout << "    Newton iteration " << plastic_iterations
-                << ": residual " << std::scientific << std::setprecision(3)
-                << change << std::defaultfloat << ", "
-                << plastic_update.n_yielded << " points yielded"
-                << std::setprecision(6) << "\n";
-        else if (plastic_iterations % 100 == 0 && !parameters.run.test_mode)
-          pcout << "    plastic iteration " << plastic_iterations << ": change "
-                << std::scientific << std::setprecision(3) << change
-                << ", relaxation " << std::defaultfloat << omega << ", "
-                << plastic_update.n_yielded << " points yielded"
-                << std::setprecision(6) << "\n";
+        print_plastic_progress(plastic_iterations,
+                               change,
+                               newton ? -1. : omega,
+                               plastic_update.n_yielded);
         const double remaining =
           (rate < 1. ? change * std::max(rate / (1. - rate), 1.) :
                        change * 1e3);
@@ -631,17 +671,92 @@ namespace mbfem
         // once the plastic zone is large, e.g. with dilatancy).
         if (newton)
           continue; // the new tangent goes in before the next pass
-        omega = (!plasticity.aitken || plastic_iterations == 1 ||
-                     plastic_update.aitken_denominator <= 0. ?
-                   1. :
-                   std::min(20.,
-                            std::max(0.05,
-                                     -omega * plastic_update.aitken_numerator /
-                                       plastic_update.aitken_denominator)));
+        omega = (plasticity.aitken && plastic_iterations > 1 ?
+                   aitken_relaxation(omega, plastic_update) :
+                   1.);
         for (const auto &block : blocks)
           block->relax_plastic_strain(omega);
       }
     return plastic_iterations;
+  }
+
+
+
+  template <int dim>
+  bool
+  MultiBodyProblem<dim>::pass_with_fallback(
+    const unsigned int k,
+    const double       time,
+    unsigned int      &iterations,
+    unsigned int      &reference_iterations,
+    const bool         from_last_solve,
+    bool               newton,
+    const unsigned int plastic_iterations)
+  {
+    if (newton)
+      try
+        {
+          update_tangent_stiffness();
+          solve_pass(
+            k, time, iterations, reference_iterations, from_last_solve);
+          return true;
+        }
+      catch (const Exceptions::ExcNoEquilibrium &e)
+        {
+          newton = give_way_to_initial_stress(e, plastic_iterations);
+        }
+      catch (const Exceptions::ExcSingularMatrix &e)
+        {
+          newton = give_way_to_initial_stress(e, plastic_iterations);
+        }
+    // (Reassembles only after a suspension: the elastic stiffness.)
+    update_tangent_stiffness();
+    solve_pass(k, time, iterations, reference_iterations, from_last_solve);
+    return newton;
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_plastic_progress(
+    const unsigned int plastic_iterations,
+    const double       change,
+    const double       omega,
+    const unsigned int n_yielded) const
+  {
+    // Progress on long runs: a line every 100 iterations, or every Newton
+    // iteration (few, each with new factorisations).
+    if (parameters.run.test_mode)
+      return;
+    if (omega < 0.)
+      pcout << "    Newton iteration " << plastic_iterations << ": residual "
+            << std::scientific << std::setprecision(3) << change
+            << std::defaultfloat << ", " << n_yielded << " points yielded"
+            << std::setprecision(6) << "\n";
+    else if (plastic_iterations % 100 == 0)
+      pcout << "    plastic iteration " << plastic_iterations << ": change "
+            << std::scientific << std::setprecision(3) << change
+            << ", relaxation " << std::defaultfloat << omega << ", "
+            << n_yielded << " points yielded" << std::setprecision(6) << "\n";
+  }
+
+
+
+  template <int dim>
+  double
+  MultiBodyProblem<dim>::aitken_relaxation(const double         omega,
+                                           const PlasticUpdate &update)
+  {
+    // Bounds that keep a noisy estimate from stalling (0.05) or
+    // overshooting far beyond the fixed point (20).
+    constexpr double smallest = 0.05, largest = 20.;
+    if (update.aitken_denominator <= 0.)
+      return 1.;
+    return std::min(largest,
+                    std::max(smallest,
+                             -omega * update.aitken_numerator /
+                               update.aitken_denominator));
   }
 
 
@@ -914,135 +1029,6 @@ namespace mbfem
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::print_interface_summary() const
-  {
-    const auto &pairs = contact->pairs();
-    const auto &data  = parameters.contact;
-    for (unsigned int i = 0; i < data.interfaces.size(); ++i)
-      {
-        double p_max = 0., q_max = 0., p_error2 = 0., p_norm2 = 0.,
-               q_error2 = 0., q_norm2 = 0.;
-        // The same measured against the closed form averaged over each
-        // pair's tributary segment: force / area is such an average, which
-        // matters where the traction is not smooth (the contact edge).
-        double p_error2_avg = 0., q_error2_avg = 0.;
-        double closed[2] = {1e300, -1e300}, stuck[2] = {1e300, -1e300};
-        for (unsigned int k = 0; k < pairs.size(); ++k)
-          if (pairs[k].interface == i)
-            {
-              const Tensor<1, dim> rho =
-                contact->local_force(k) / pairs[k].area;
-              Tensor<1, dim> q = rho;
-              q[0]             = 0.;
-              p_max            = std::max(p_max, rho[0]);
-              q_max            = std::max(q_max, q.norm());
-              const double x   = pairs[k].midpoint()[0];
-              if (contact->state(k) != ContactState::open)
-                {
-                  closed[0] = std::min(closed[0], x);
-                  closed[1] = std::max(closed[1], x);
-                }
-              if (contact->state(k) == ContactState::stick)
-                {
-                  stuck[0] = std::min(stuck[0], x);
-                  stuck[1] = std::max(stuck[1], x);
-                }
-              if (dim == 2 && data.compute_traction_errors)
-                {
-                  const Point<2> point(x, pairs[k].midpoint()[1]);
-                  const double   p_exact =
-                    data.exact_normal_traction->value(point);
-                  const double q_exact =
-                    data.exact_tangential_traction->value(point);
-                  p_error2 += pairs[k].area * std::pow(rho[0] - p_exact, 2);
-                  p_norm2 += pairs[k].area * p_exact * p_exact;
-                  q_error2 += pairs[k].area * std::pow(rho[1] - q_exact, 2);
-                  q_norm2 += pairs[k].area * q_exact * q_exact;
-
-                  // Midpoint rule with 64 points along the tangent.
-                  Tensor<1, 2> tangent;
-                  tangent[0]       = pairs[k].frame[1][0];
-                  tangent[1]       = pairs[k].frame[1][1];
-                  double p_average = 0., q_average = 0.;
-                  for (unsigned int j = 0; j < 64; ++j)
-                    {
-                      const Point<2> y = point + ((j + 0.5) / 64 - 0.5) *
-                                                   pairs[k].area * tangent;
-                      p_average += data.exact_normal_traction->value(y) / 64;
-                      q_average +=
-                        data.exact_tangential_traction->value(y) / 64;
-                    }
-                  p_error2_avg +=
-                    pairs[k].area * std::pow(rho[0] - p_average, 2);
-                  q_error2_avg +=
-                    pairs[k].area * std::pow(rho[1] - q_average, 2);
-                }
-            }
-        const auto span = [](const double range[2]) {
-          std::ostringstream s;
-          if (range[0] > range[1])
-            s << "none";
-          else
-            s << std::fixed << std::setprecision(5) << "x from " << range[0]
-              << " to " << range[1] << " (half-width "
-              << 0.5 * (range[1] - range[0]) << ")";
-          return s.str();
-        };
-        // Table 1 at the end: slipping pairs on the Mohr-Coulomb cone,
-        // stuck pairs inside it (to 1e-8 of the largest pair force).
-        double largest_force = 0., off_cone = 0., outside = 0.;
-        for (unsigned int k = 0; k < pairs.size(); ++k)
-          if (pairs[k].interface == i)
-            largest_force =
-              std::max(largest_force, contact->local_force(k).norm());
-        for (unsigned int k = 0; k < pairs.size(); ++k)
-          if (pairs[k].interface == i && !pairs[k].tied &&
-              contact->state(k) != ContactState::open)
-            {
-              const Tensor<1, dim> rho        = contact->local_force(k);
-              Tensor<1, dim>       tangential = rho;
-              tangential[0]                   = 0.;
-              const double limit =
-                pairs[k].joint.shear_strength(rho[0],
-                                              pairs[k].area,
-                                              contact->broken(k));
-              if (contact->state(k) == ContactState::slip)
-                off_cone =
-                  std::max(off_cone, std::abs(tangential.norm() - limit));
-              else
-                outside = std::max(outside, tangential.norm() - limit);
-            }
-        const double tolerance = 1e-8 * std::max(largest_force, 1e-300);
-        pcout << "  interface " << i + 1
-              << " at the end: max p = " << std::setprecision(6) << p_max
-              << ", max |q| = " << q_max
-              << "\n    closed pairs: " << span(closed)
-              << "\n    stuck pairs:  " << span(stuck) << "\n"
-              << "    Coulomb: slipping pairs on the cone "
-              << (off_cone <= tolerance ? "yes" : "NO")
-              << ", stuck pairs inside it "
-              << (outside <= tolerance ? "yes" : "NO") << "\n";
-        // Where the exact q is zero (a geostatic joint), q is measured
-        // against the size of p instead.
-        if (q_norm2 == 0.)
-          q_norm2 = p_norm2;
-        if (dim == 2 && data.compute_traction_errors)
-          pcout << "    relative L2 error against Contact/Exact traction: p "
-                << std::fixed << std::setprecision(4)
-                << std::sqrt(p_error2 / std::max(p_norm2, 1e-300)) << ", q "
-                << std::sqrt(q_error2 / std::max(q_norm2, 1e-300))
-                << " (at the pairs); p "
-                << std::sqrt(p_error2_avg / std::max(p_norm2, 1e-300)) << ", q "
-                << std::sqrt(q_error2_avg / std::max(q_norm2, 1e-300))
-                << " (averaged over each pair's area)" << std::defaultfloat
-                << std::setprecision(6) << "\n";
-      }
-  }
-
-
-
-  template <int dim>
-  void
   MultiBodyProblem<dim>::print_errors(const double time) const
   {
     parameters.exact_solution.displacement->set_time(time);
@@ -1084,129 +1070,6 @@ namespace mbfem
               << log_error(u_relative) << ", stress " << log_error(s_relative)
               << "\n";
       }
-  }
-
-
-
-  template <int dim>
-  std::string
-  MultiBodyProblem<dim>::write_pairs(const unsigned int k,
-                                     const double       time) const
-  {
-    const auto       &pairs = contact->pairs();
-    const std::string stem =
-      parameters.output.base_name + "-pairs-" + Utilities::int_to_string(k, 4);
-    const char        *axes[] = {"x", "y", "z"};
-    std::ostringstream csv;
-    csv << "# increment " << k << ", t = " << time << "\n";
-    csv << "pair,interface";
-    for (unsigned int d = 0; d < dim; ++d)
-      csv << "," << axes[d];
-    csv << ",normal_force,normal_traction";
-    for (unsigned int d = 1; d < dim; ++d)
-      csv << ",tangential_force_" << d << ",tangential_traction_" << d;
-    csv << ",gap";
-    for (unsigned int d = 1; d < dim; ++d)
-      csv << ",slip_" << d;
-    csv << ",state,broken,area,initial_gap\n";
-
-    std::ostringstream points, state, traction, gap, slip, normal;
-    for (unsigned int i = 0; i < pairs.size(); ++i)
-      {
-        const auto          &pair = pairs[i];
-        const Point<dim>     x    = pair.midpoint();
-        const Tensor<1, dim> rho  = contact->local_force(i);
-        const Tensor<1, dim> s    = contact->slip(i);
-        char                 buffer[64];
-        csv << i << "," << pair.interface + 1;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            std::snprintf(buffer, sizeof(buffer), ",%.10e", x[d]);
-            csv << buffer;
-          }
-        std::snprintf(
-          buffer, sizeof(buffer), ",%.10e,%.10e", rho[0], rho[0] / pair.area);
-        csv << buffer;
-        for (unsigned int d = 1; d < dim; ++d)
-          {
-            std::snprintf(buffer,
-                          sizeof(buffer),
-                          ",%.10e,%.10e",
-                          rho[d],
-                          rho[d] / pair.area);
-            csv << buffer;
-          }
-        std::snprintf(buffer, sizeof(buffer), ",%.10e", contact->gap(i));
-        csv << buffer;
-        for (unsigned int d = 1; d < dim; ++d)
-          {
-            std::snprintf(buffer, sizeof(buffer), ",%.10e", s[d]);
-            csv << buffer;
-          }
-        std::snprintf(
-          buffer, sizeof(buffer), ",%.10e,%.10e", pair.area, pair.initial_gap);
-        csv << "," << to_string(contact->state(i)) << ","
-            << (contact->broken(i) ? 1 : 0) << buffer << "\n";
-
-        // VTU point data, global components.
-        const Tensor<1, dim> r = contact->force(i) / pair.area;
-        Tensor<1, dim>       slip_global;
-        for (unsigned int d = 1; d < dim; ++d)
-          slip_global += s[d] * pair.frame[d];
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            points << (d < dim ? x[d] : 0.) << " ";
-            traction << (d < dim ? r[d] : 0.) << " ";
-            slip << (d < dim ? slip_global[d] : 0.) << " ";
-            normal << (d < dim ? pair.frame[0][d] : 0.) << " ";
-          }
-        state << static_cast<int>(contact->state(i)) << " ";
-        gap << contact->gap(i) << " ";
-      }
-    write_file_atomically(parameters.output.directory + "/" + stem + ".csv",
-                          csv.str());
-
-    if (!parameters.output.write_vtu)
-      return "";
-    const unsigned int n = pairs.size();
-    std::ostringstream vtu;
-    vtu << std::setprecision(10)
-        << "<?xml version=\"1.0\"?>\n"
-           "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
-           "<UnstructuredGrid><Piece NumberOfPoints=\""
-        << n << "\" NumberOfCells=\"" << n << "\">\n"
-        << "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-           "format=\"ascii\">"
-        << points.str() << "</DataArray></Points>\n<Cells>\n"
-        << "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">";
-    for (unsigned int i = 0; i < n; ++i)
-      vtu << i << " ";
-    vtu << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" "
-           "format=\"ascii\">";
-    for (unsigned int i = 0; i < n; ++i)
-      vtu << i + 1 << " ";
-    vtu << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
-           "format=\"ascii\">";
-    for (unsigned int i = 0; i < n; ++i)
-      vtu << "1 "; // VTK_VERTEX
-    vtu << "</DataArray>\n</Cells>\n<PointData Scalars=\"state\">\n"
-        << "<DataArray type=\"Int32\" Name=\"state\" format=\"ascii\">"
-        << state.str() << "</DataArray>\n"
-        << "<DataArray type=\"Float64\" Name=\"traction\" "
-           "NumberOfComponents=\"3\" format=\"ascii\">"
-        << traction.str() << "</DataArray>\n"
-        << "<DataArray type=\"Float64\" Name=\"gap\" format=\"ascii\">"
-        << gap.str() << "</DataArray>\n"
-        << "<DataArray type=\"Float64\" Name=\"slip\" NumberOfComponents=\"3\" "
-           "format=\"ascii\">"
-        << slip.str() << "</DataArray>\n"
-        << "<DataArray type=\"Float64\" Name=\"normal\" "
-           "NumberOfComponents=\"3\" format=\"ascii\">"
-        << normal.str() << "</DataArray>\n"
-        << "</PointData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
-    write_file_atomically(parameters.output.directory + "/" + stem + ".vtu",
-                          vtu.str());
-    return stem + ".vtu";
   }
 
 

@@ -3,6 +3,7 @@
 
 #include <mbfem/block/block.h>
 #include <mbfem/contact/contact_solver.h>
+#include <mbfem/output/output.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -52,6 +53,47 @@ namespace mbfem
     void
     setup_blocks();
 
+    /** The blocks' sizes, materials and free rigid-body modes. */
+    void
+    print_blocks() const;
+
+    /** Every block with free rigid-body modes has a pair that can hold it. */
+    void
+    check_blocks_held(const std::vector<ContactPair<dim>> &pairs) const;
+
+    /**
+     * The contact pairs and the formulation(s) that solve for their forces:
+     * the condensed one (flexibilities), the monolithic one, or both.
+     */
+    void
+    make_contact();
+
+    /** The output folder, and the PVD writers of blocks and pairs. */
+    void
+    make_writers();
+
+    /**
+     * One load increment, as step-18's do_timestep(): solve (with step
+     * halving), check, print, compare, write, commit.
+     */
+    void
+    do_increment(const unsigned int k);
+
+    void
+    print_plasticity(const unsigned int   plastic_iterations,
+                     const PlasticUpdate &plastic_update) const;
+
+    /** What a finished run prints at its end. */
+    void
+    print_run_summary();
+
+    /** Formulation "both": the comparison over all increments. */
+    void
+    print_comparison_summary() const;
+
+    void
+    print_formulation_times() const;
+
     /**
      * Solves increment @p k up to pseudo-time @p time from the committed
      * state: one pass for elastic blocks, repeated passes until the plastic
@@ -80,6 +122,38 @@ namespace mbfem
     /** Accepts a step short of the increment's end as converged. */
     void
     commit_step();
+
+    /**
+     * One pass of solve_step(): with Newton's tangent if @p newton, and if
+     * that has no solution, with the elastic stiffness. Returns whether
+     * Newton is still on.
+     */
+    bool
+    pass_with_fallback(const unsigned int k,
+                       const double       time,
+                       unsigned int      &iterations,
+                       unsigned int      &reference_iterations,
+                       const bool         from_last_solve,
+                       bool               newton,
+                       const unsigned int plastic_iterations);
+
+    /**
+     * A progress line for long plastic runs; @p omega < 0 for a Newton
+     * iteration.
+     */
+    void
+    print_plastic_progress(const unsigned int plastic_iterations,
+                           const double       change,
+                           const double       omega,
+                           const unsigned int n_yielded) const;
+
+    /**
+     * Aitken's relaxation of the fixed point x = F(x) (plain steps converge
+     * at a rate near 1 once the plastic zone is large): the next omega from
+     * the last two residuals.
+     */
+    static double
+    aitken_relaxation(const double omega, const PlasticUpdate &update);
 
     /**
      * Newton failed on @p failure: puts the elastic stiffness back for the
@@ -119,17 +193,6 @@ namespace mbfem
     print_errors(const double time) const;
 
     /**
-     * Per interface: largest tractions, the extent of the closed and the
-     * stuck pairs (2D: along x), and errors against Contact/Exact traction.
-     */
-    void
-    print_interface_summary() const;
-
-    /** The pairs as CSV and as a VTU point set, for this increment. */
-    std::string
-    write_pairs(const unsigned int k, const double time) const;
-
-    /**
      * Formulation "both": the monolithic reference against the condensed
      * solve of this increment, pair by pair; prints and records it.
      */
@@ -161,6 +224,9 @@ namespace mbfem
     std::unique_ptr<ContactSolver<dim>>      contact;
     /** Formulation "both": the monolithic solve beside the condensed one. */
     std::unique_ptr<ContactSolver<dim>> reference;
+    /** VTU/PVD of the blocks and of the pairs (with VTU output on). */
+    std::unique_ptr<OutputWriter> writer;
+    std::unique_ptr<OutputWriter> pair_writer;
 
     /**
      * Wall time of the work of each formulation alone (not the mesh, the

@@ -1,0 +1,29 @@
+#ifndef mbfem_output_pair_output_h
+#define mbfem_output_pair_output_h
+
+#include <mbfem/contact/contact_solver.h>
+#include <mbfem/output/output.h>
+
+#include <string>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /**
+   * The contact pairs of one increment as files: a CSV table (a row per
+   * pair: position, forces and tractions in the pair's frame, gap, slip,
+   * state) and, with VTU output on, a VTU point set for ParaView (global
+   * components: traction, slip, normal; state and gap as scalars). Both are
+   * written atomically. Returns the VTU file's name (for the PVD index), or
+   * "" without VTU output.
+   */
+  template <int dim>
+  std::string
+  write_pair_files(const ContactSolver<dim> &contact,
+                   const OutputParameters   &output,
+                   const unsigned int        increment,
+                   const double              time);
+} // namespace mbfem
+
+#endif

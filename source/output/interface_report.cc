@@ -1,0 +1,199 @@
+#include <mbfem/output/interface_report.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace mbfem
+{
+  namespace
+  {
+    /** Smallest and largest of a coordinate; empty while min > max. */
+    struct Range
+    {
+      double min = 1e300;
+      double max = -1e300;
+
+      void
+      add(const double x)
+      {
+        min = std::min(min, x);
+        max = std::max(max, x);
+      }
+
+      std::string
+      to_string() const
+      {
+        std::ostringstream s;
+        if (min > max)
+          s << "none";
+        else
+          s << std::fixed << std::setprecision(5) << "x from " << min << " to "
+            << max << " (half-width " << 0.5 * (max - min) << ")";
+        return s.str();
+      }
+    };
+
+    /** Squared L2 errors of p and q, and of the exact fields' norms. */
+    struct TractionErrors
+    {
+      double p_error2 = 0., p_norm2 = 0., q_error2 = 0., q_norm2 = 0.;
+      /** Against the exact traction averaged over each pair's area. */
+      double p_error2_average = 0., q_error2_average = 0.;
+    };
+
+    /**
+     * Adds pair @p k's errors: at its midpoint, and against the closed
+     * form averaged over its tributary segment (force / area is such an
+     * average, which matters where the traction is not smooth, at the edge
+     * of the contact zone).
+     */
+    template <int dim>
+    void
+    add_traction_errors(const ContactSolver<dim> &contact,
+                        const ContactParameters  &parameters,
+                        const unsigned int        k,
+                        TractionErrors           &errors)
+    {
+      const auto          &pair = contact.pairs()[k];
+      const Tensor<1, dim> rho  = contact.local_force(k) / pair.area;
+      const Point<2>       point(pair.midpoint()[0], pair.midpoint()[1]);
+      const auto          &exact_p = *parameters.exact_normal_traction;
+      const auto          &exact_q = *parameters.exact_tangential_traction;
+      const double         p_exact = exact_p.value(point);
+      const double         q_exact = exact_q.value(point);
+      errors.p_error2 += pair.area * std::pow(rho[0] - p_exact, 2);
+      errors.p_norm2 += pair.area * p_exact * p_exact;
+      errors.q_error2 += pair.area * std::pow(rho[1] - q_exact, 2);
+      errors.q_norm2 += pair.area * q_exact * q_exact;
+
+      // Midpoint rule with 64 points along the tangent.
+      const Tensor<1, 2> tangent({pair.frame[1][0], pair.frame[1][1]});
+      double             p_average = 0., q_average = 0.;
+      for (unsigned int j = 0; j < 64; ++j)
+        {
+          const Point<2> y =
+            point + ((j + 0.5) / 64 - 0.5) * pair.area * tangent;
+          p_average += exact_p.value(y) / 64;
+          q_average += exact_q.value(y) / 64;
+        }
+      errors.p_error2_average += pair.area * std::pow(rho[0] - p_average, 2);
+      errors.q_error2_average += pair.area * std::pow(rho[1] - q_average, 2);
+    }
+
+
+
+    /**
+     * Table 1 at the end: whether the slipping pairs of interface @p i are
+     * on the Mohr-Coulomb cone and the stuck ones inside it, to 1e-8 of the
+     * interface's largest pair force.
+     */
+    template <int dim>
+    std::string
+    coulomb_check(const ContactSolver<dim> &contact, const unsigned int i)
+    {
+      const auto &pairs         = contact.pairs();
+      double      largest_force = 0., off_cone = 0., outside = 0.;
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        if (pairs[k].interface == i)
+          largest_force =
+            std::max(largest_force, contact.local_force(k).norm());
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        if (pairs[k].interface == i && !pairs[k].tied &&
+            contact.state(k) != ContactState::open)
+          {
+            const Tensor<1, dim> rho        = contact.local_force(k);
+            Tensor<1, dim>       tangential = rho;
+            tangential[0]                   = 0.;
+            const double limit =
+              pairs[k].joint.shear_strength(rho[0],
+                                            pairs[k].area,
+                                            contact.broken(k));
+            if (contact.state(k) == ContactState::slip)
+              off_cone =
+                std::max(off_cone, std::abs(tangential.norm() - limit));
+            else
+              outside = std::max(outside, tangential.norm() - limit);
+          }
+      const double tolerance = 1e-8 * std::max(largest_force, 1e-300);
+      return std::string("slipping pairs on the cone ") +
+             (off_cone <= tolerance ? "yes" : "NO") +
+             ", stuck pairs inside it " + (outside <= tolerance ? "yes" : "NO");
+    }
+
+
+
+    void
+    print_traction_errors(TractionErrors errors, ConditionalOStream &pcout)
+    {
+      // Where the exact q is zero (a geostatic joint), q is measured
+      // against the size of p instead.
+      if (errors.q_norm2 == 0.)
+        errors.q_norm2 = errors.p_norm2;
+      const auto relative = [](const double error2, const double norm2) {
+        return std::sqrt(error2 / std::max(norm2, 1e-300));
+      };
+      pcout << "    relative L2 error against Contact/Exact traction: p "
+            << std::fixed << std::setprecision(4)
+            << relative(errors.p_error2, errors.p_norm2) << ", q "
+            << relative(errors.q_error2, errors.q_norm2)
+            << " (at the pairs); p "
+            << relative(errors.p_error2_average, errors.p_norm2) << ", q "
+            << relative(errors.q_error2_average, errors.q_norm2)
+            << " (averaged over each pair's area)" << std::defaultfloat
+            << std::setprecision(6) << "\n";
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  print_interface_summary(const ContactSolver<dim> &contact,
+                          const ContactParameters  &parameters,
+                          ConditionalOStream       &pcout)
+  {
+    const auto &pairs       = contact.pairs();
+    const bool  with_errors = (dim == 2 && parameters.compute_traction_errors);
+    for (unsigned int i = 0; i < parameters.interfaces.size(); ++i)
+      {
+        double         p_max = 0., q_max = 0.;
+        Range          closed, stuck;
+        TractionErrors errors;
+        for (unsigned int k = 0; k < pairs.size(); ++k)
+          if (pairs[k].interface == i)
+            {
+              Tensor<1, dim> q = contact.local_force(k) / pairs[k].area;
+              p_max            = std::max(p_max, q[0]);
+              q[0]             = 0.;
+              q_max            = std::max(q_max, q.norm());
+              const double x   = pairs[k].midpoint()[0];
+              if (contact.state(k) != ContactState::open)
+                closed.add(x);
+              if (contact.state(k) == ContactState::stick)
+                stuck.add(x);
+              if (with_errors)
+                add_traction_errors(contact, parameters, k, errors);
+            }
+        pcout << "  interface " << i + 1
+              << " at the end: max p = " << std::setprecision(6) << p_max
+              << ", max |q| = " << q_max
+              << "\n    closed pairs: " << closed.to_string()
+              << "\n    stuck pairs:  " << stuck.to_string() << "\n"
+              << "    Coulomb: " << coulomb_check(contact, i) << "\n";
+        if (with_errors)
+          print_traction_errors(errors, pcout);
+      }
+  }
+
+
+
+  template void
+  print_interface_summary(const ContactSolver<2> &,
+                          const ContactParameters &,
+                          ConditionalOStream &);
+  template void
+  print_interface_summary(const ContactSolver<3> &,
+                          const ContactParameters &,
+                          ConditionalOStream &);
+} // namespace mbfem
