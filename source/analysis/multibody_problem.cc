@@ -1,3 +1,4 @@
+#include <mbfem/analysis/block_measures.h>
 #include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/base/exceptions.h>
 #include <mbfem/base/parameters.h>
@@ -856,7 +857,7 @@ namespace mbfem
       force_scale = std::max(force_scale, contact->local_force(i).norm());
     for (const auto &block : blocks)
       displacement_scale =
-        std::max(displacement_scale, block->max_displacement());
+        std::max(displacement_scale, max_displacement(*block));
     double       force = 0., gap = 0., slip = 0.;
     unsigned int differ = 0;
     for (unsigned int i = 0; i < n_pairs; ++i)
@@ -971,8 +972,8 @@ namespace mbfem
     double max_u = 0., max_von_mises = 0.;
     for (const auto &block : blocks)
       {
-        max_u         = std::max(max_u, block->max_displacement());
-        max_von_mises = std::max(max_von_mises, block->max_von_mises_stress());
+        max_u         = std::max(max_u, max_displacement(*block));
+        max_von_mises = std::max(max_von_mises, max_von_mises_stress(*block));
       }
     pcout << "  increment " << k << "/" << parameters.load_history.n_increments
           << ", t = " << time << ": ";
@@ -1037,8 +1038,9 @@ namespace mbfem
     for (const auto &block : blocks)
       {
         const ErrorNorms e =
-          block->compute_errors(*parameters.exact_solution.displacement,
-                                *parameters.exact_solution.stress);
+          compute_errors(*block,
+                         *parameters.exact_solution.displacement,
+                         *parameters.exact_solution.stress);
         u_error2 += e.displacement * e.displacement;
         s_error2 += e.stress * e.stress;
         if (e.displacement_relative > 0.)

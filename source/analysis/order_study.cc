@@ -1,3 +1,4 @@
+#include <mbfem/analysis/block_measures.h>
 #include <mbfem/analysis/order_study.h>
 #include <mbfem/base/parameters.h>
 
@@ -112,8 +113,9 @@ namespace mbfem
     parameters.exact_solution.displacement->set_time(time);
     parameters.exact_solution.stress->set_time(time);
     const ErrorNorms errors =
-      block.compute_errors(*parameters.exact_solution.displacement,
-                           *parameters.exact_solution.stress);
+      compute_errors(block,
+                     *parameters.exact_solution.displacement,
+                     *parameters.exact_solution.stress);
 
     const double nan = std::numeric_limits<double>::quiet_NaN();
     return {degree,

@@ -1,5 +1,6 @@
 #include <mbfem/base/exceptions.h>
 #include <mbfem/block/block.h>
+#include <mbfem/block/floating_modes.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -98,23 +99,11 @@ namespace mbfem
     external_load.reinit(dof_handler.n_dofs());
     physical_load.reinit(dof_handler.n_dofs());
 
-    pins.clear();
-    make_constraints(boundary_conditions);
-
-    // The floating modes, as displacement vectors, and the pins that
-    // remove them; then the constraints again, now with the pins.
-    const std::vector<Vector<double>> modes = rigid_body_modes();
-    free_mode_coefficients                  = compute_free_rigid_body_modes();
-    free_modes.clear();
-    for (const auto &coefficients : free_mode_coefficients)
-      {
-        Vector<double> mode(dof_handler.n_dofs());
-        for (unsigned int a = 0; a < modes.size(); ++a)
-          mode.add(coefficients(a), modes[a]);
-        free_modes.push_back(mode);
-      }
-    choose_pins();
-    make_constraints(boundary_conditions);
+    // The supports first, then the floating modes they leave free and the
+    // pins that remove them, then the constraints again with the pins.
+    make_constraints(boundary_conditions, {});
+    floating.compute(dof_handler, mapping, physical_constraints, name());
+    make_constraints(boundary_conditions, floating.pins());
 
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
@@ -206,7 +195,7 @@ namespace mbfem
   unsigned int
   Block<dim>::n_plastic_points() const
   {
-    return Utilities::fixed_power<dim>(fe.degree + 1);
+    return state_quadrature().size();
   }
 
 
@@ -231,7 +220,7 @@ namespace mbfem
       return result;
     FEValues<dim>                        fe_values(mapping,
                             fe,
-                            QGauss<dim>(fe.degree + 1),
+                            state_quadrature(),
                             update_gradients | update_quadrature_points |
                               update_JxW_values);
     const FEValuesExtractors::Vector     displacement(0);
@@ -452,7 +441,8 @@ namespace mbfem
   template <int dim>
   void
   Block<dim>::make_constraints(
-    const BoundaryConditions<dim> &boundary_conditions)
+    const BoundaryConditions<dim>              &boundary_conditions,
+    const std::vector<types::global_dof_index> &pins)
   {
     physical_constraints.clear();
     DoFTools::make_hanging_node_constraints(dof_handler, physical_constraints);
@@ -535,49 +525,6 @@ namespace mbfem
 
   template <int dim>
   void
-  Block<dim>::choose_pins()
-  {
-    // Greedy column pivoting on the free modes: pick the DoF where the
-    // (remaining) modes move most, then remove that direction. q picks give
-    // a nonsingular q x q system, i.e. a statically determinate support.
-    const unsigned int          q        = free_modes.size();
-    std::vector<Vector<double>> residual = free_modes;
-    for (unsigned int pick = 0; pick < q; ++pick)
-      {
-        types::global_dof_index best       = numbers::invalid_dof_index;
-        double                  best_norm2 = 0.;
-        for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-          if (!physical_constraints.is_constrained(i))
-            {
-              double norm2 = 0.;
-              for (const auto &r : residual)
-                norm2 += r(i) * r(i);
-              if (norm2 > best_norm2 * (1. + 1e-12))
-                {
-                  best_norm2 = norm2;
-                  best       = i;
-                }
-            }
-        AssertThrow(best != numbers::invalid_dof_index && best_norm2 > 1e-20,
-                    ExcMessage(name() + ": cannot pin its free modes."));
-        pins.push_back(best);
-
-        // residual <- residual (I - v v^T), v = residual row at best
-        std::vector<double> v(q);
-        for (unsigned int a = 0; a < q; ++a)
-          v[a] = residual[a](best) / std::sqrt(best_norm2);
-        Vector<double> combination(dof_handler.n_dofs());
-        for (unsigned int a = 0; a < q; ++a)
-          combination.add(v[a], residual[a]);
-        for (unsigned int a = 0; a < q; ++a)
-          residual[a].add(-v[a], combination);
-      }
-  }
-
-
-
-  template <int dim>
-  void
   Block<dim>::cell_matrix(const FEValues<dim> &fe_values,
                           FullMatrix<double>  &matrix,
                           const unsigned int   cell_index) const
@@ -639,7 +586,7 @@ namespace mbfem
   {
     FEValues<dim>      fe_values(mapping,
                             fe,
-                            QGauss<dim>(fe.degree + 1),
+                            state_quadrature(),
                             update_gradients | update_JxW_values);
     FullMatrix<double> cell(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
@@ -731,7 +678,7 @@ namespace mbfem
                             const double             time)
   {
     boundary_conditions.set_time(time);
-    make_constraints(boundary_conditions);
+    make_constraints(boundary_conditions, floating.pins());
     load          = 0.;
     external_load = 0.;
     physical_load = 0.;
@@ -750,7 +697,7 @@ namespace mbfem
                                        update_JxW_values);
     FEValues<dim>                        stiffness_values(mapping,
                                    fe,
-                                   QGauss<dim>(fe.degree + 1),
+                                   state_quadrature(),
                                    update_gradients | update_JxW_values);
     const FEValuesExtractors::Vector     displacement(0);
     FullMatrix<double>                   matrix(n, n);
@@ -929,10 +876,10 @@ namespace mbfem
   {
     direct_solver.solve(solution, load);
     constraints.distribute(solution);
-    AssertThrow(alpha.empty() || alpha.size() == free_modes.size(),
+    AssertThrow(alpha.empty() || alpha.size() == floating.modes().size(),
                 ExcInternalError());
     for (unsigned int i = 0; i < alpha.size(); ++i)
-      solution.add(alpha[i], free_modes[i]);
+      solution.add(alpha[i], floating.modes()[i]);
   }
 
 
@@ -981,9 +928,9 @@ namespace mbfem
   std::vector<double>
   Block<dim>::external_load_resultant() const
   {
-    std::vector<double> result(free_modes.size());
-    for (unsigned int a = 0; a < free_modes.size(); ++a)
-      result[a] = free_modes[a] * external_load;
+    std::vector<double> result(floating.modes().size());
+    for (unsigned int a = 0; a < floating.modes().size(); ++a)
+      result[a] = floating.modes()[a] * external_load;
     return result;
   }
 
@@ -993,7 +940,25 @@ namespace mbfem
   const std::vector<Vector<double>> &
   Block<dim>::floating_modes() const
   {
-    return free_modes;
+    return floating.modes();
+  }
+
+
+
+  template <int dim>
+  std::vector<Vector<double>>
+  Block<dim>::rigid_body_modes() const
+  {
+    return FloatingModes<dim>::rigid_body_modes(dof_handler, mapping);
+  }
+
+
+
+  template <int dim>
+  std::string
+  Block<dim>::describe_rigid_body_mode(const Vector<double> &coefficients)
+  {
+    return FloatingModes<dim>::describe(coefficients);
   }
 
 
@@ -1010,285 +975,36 @@ namespace mbfem
 
 
   template <int dim>
-  std::vector<Vector<double>>
-  Block<dim>::rigid_body_modes() const
-  {
-    const std::vector<Point<dim>>        points = support_points();
-    std::vector<unsigned int>            component(dof_handler.n_dofs());
-    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dof_indices);
-        for (unsigned int i = 0; i < dof_indices.size(); ++i)
-          component[dof_indices[i]] = fe.system_to_component_index(i).first;
-      }
-
-    // Rotations about the centre, lengths in units of the block's size:
-    // this keeps the modes of unit order whatever the units of the model.
-    Point<dim> centre;
-    for (const auto &p : points)
-      centre += p / static_cast<double>(points.size());
-    const double size = GridTools::diameter(triangulation);
-
-    const unsigned int          n_modes = (dim == 2 ? 3 : 6);
-    std::vector<Vector<double>> modes(n_modes, Vector<double>(points.size()));
-    for (unsigned int i = 0; i < points.size(); ++i)
-      {
-        const Tensor<1, dim> x = (points[i] - centre) / size;
-        const unsigned int   c = component[i];
-        modes[c](i)            = 1.;
-        if (dim == 2)
-          modes[2](i) = (c == 0 ? -x[1] : x[0]); // rotation about z
-        else
-          for (unsigned int axis = 0; axis < 3; ++axis)
-            {
-              // (e_axis x x)_c: rotation about the coordinate axis
-              Tensor<1, dim> e;
-              e[axis]                   = 1.;
-              const Tensor<1, dim> curl = cross_product_3d(e, x);
-              modes[dim + axis](i)      = curl[c];
-            }
-      }
-    return modes;
-  }
-
-
-
-  template <int dim>
   const std::vector<Vector<double>> &
   Block<dim>::free_rigid_body_modes() const
   {
-    return free_mode_coefficients;
+    return floating.coefficients();
   }
 
 
 
   template <int dim>
-  std::vector<Vector<double>>
-  Block<dim>::compute_free_rigid_body_modes() const
+  QGauss<dim>
+  Block<dim>::state_quadrature() const
   {
-    const std::vector<Vector<double>> modes   = rigid_body_modes();
-    const unsigned int                n_modes = modes.size();
-
-    // G = A^T A, with A the constraint equations of the supports applied to
-    // the modes (a prescribed DoF: m_i = 0; a platen node: m_i - m_master =
-    // 0): the free modes are G's null space.
-    LAPACKFullMatrix<double> gram(n_modes, n_modes);
-    std::vector<double>      equation(n_modes);
-    for (const auto &line : physical_constraints.get_lines())
-      {
-        for (unsigned int a = 0; a < n_modes; ++a)
-          {
-            equation[a] = modes[a](line.index);
-            for (const auto &[j, weight] : line.entries)
-              equation[a] -= weight * modes[a](j);
-          }
-        for (unsigned int a = 0; a < n_modes; ++a)
-          for (unsigned int b = 0; b < n_modes; ++b)
-            gram(a, b) += equation[a] * equation[b];
-      }
-
-    // Mode values are of unit order, so a held mode has an eigenvalue of
-    // order one or more (one prescribed DoF at distance 1e-4 of the block
-    // size from the centre still gives 1e-8); a free one has round-off.
-    Vector<double>     eigenvalues;
-    FullMatrix<double> eigenvectors;
-    gram.compute_eigenvalues_symmetric(
-      -1., 1e-10, 1e-14, eigenvalues, eigenvectors);
-
-    // The null space has no preferred basis (LAPACK may return any
-    // rotation of it); reduced row-echelon form makes it unique and
-    // readable: "translation x", not "0.71 translation x + 0.71 ...".
-    const unsigned int n_free = eigenvalues.size();
-    FullMatrix<double> basis(n_free, n_modes);
-    for (unsigned int k = 0; k < n_free; ++k)
-      for (unsigned int a = 0; a < n_modes; ++a)
-        basis(k, a) = eigenvectors(a, k);
-    unsigned int row = 0;
-    for (unsigned int column = 0; column < n_modes && row < n_free; ++column)
-      {
-        unsigned int pivot = row;
-        for (unsigned int k = row + 1; k < n_free; ++k)
-          if (std::abs(basis(k, column)) > std::abs(basis(pivot, column)))
-            pivot = k;
-        if (std::abs(basis(pivot, column)) < 1e-8)
-          continue;
-        basis.swap_row(row, pivot);
-        const double scale = basis(row, column);
-        for (unsigned int a = 0; a < n_modes; ++a)
-          basis(row, a) /= scale;
-        for (unsigned int k = 0; k < n_free; ++k)
-          if (k != row)
-            {
-              const double factor = basis(k, column);
-              for (unsigned int a = 0; a < n_modes; ++a)
-                basis(k, a) -= factor * basis(row, a);
-            }
-        ++row;
-      }
-
-    std::vector<Vector<double>> free_modes(n_free, Vector<double>(n_modes));
-    for (unsigned int k = 0; k < n_free; ++k)
-      for (unsigned int a = 0; a < n_modes; ++a)
-        free_modes[k](a) = (std::abs(basis(k, a)) < 1e-12 ? 0. : basis(k, a));
-    return free_modes;
+    return QGauss<dim>(fe.degree + 1);
   }
 
 
 
   template <int dim>
-  std::string
-  Block<dim>::describe_rigid_body_mode(const Vector<double> &coefficients)
+  SymmetricTensor<2, 3>
+  Block<dim>::stress(const SymmetricTensor<2, dim> &strain,
+                     const Point<dim>              &point,
+                     const unsigned int             cell,
+                     const unsigned int             q) const
   {
-    static const char *names_2d[] = {"translation x",
-                                     "translation y",
-                                     "rotation about z"};
-    static const char *names_3d[] = {"translation x",
-                                     "translation y",
-                                     "translation z",
-                                     "rotation about x",
-                                     "rotation about y",
-                                     "rotation about z"};
-    std::string        description;
-    for (unsigned int a = 0; a < coefficients.size(); ++a)
-      if (std::abs(coefficients(a)) > 1e-3)
-        {
-          description += (description.empty() ? "" : " + ");
-          if (std::abs(std::abs(coefficients(a)) - 1.) > 1e-3)
-            {
-              char factor[32];
-              std::snprintf(factor, sizeof(factor), "%.2f ", coefficients(a));
-              description += factor;
-            }
-          description += (dim == 2 ? names_2d[a] : names_3d[a]);
-        }
-    return description;
-  }
-
-
-
-  template <int dim>
-  ErrorNorms
-  Block<dim>::compute_errors(const Function<dim> &exact_displacement,
-                             const Function<dim> &exact_stress) const
-  {
-    AssertDimension(exact_displacement.n_components, dim);
-    AssertDimension(exact_stress.n_components, dim * dim);
-
-    // A plastic block: at the points of its plastic state.
-    const QGauss<dim> quadrature(mohr_coulomb ? fe.degree + 1 : fe.degree + 3);
-    FEValues<dim>     fe_values(mapping,
-                            fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<Tensor<1, dim>>          u(quadrature.size());
-    std::vector<SymmetricTensor<2, dim>> eps(quadrature.size());
-    Vector<double>                       u_exact(dim);
-    Vector<double>                       sigma_exact(dim * dim);
-
-    double u_error2 = 0., u_norm2 = 0., s_error2 = 0., s_norm2 = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        fe_values.reinit(cell);
-        fe_values[displacement].get_function_values(solution, u);
-        fe_values[displacement].get_function_symmetric_gradients(solution, eps);
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          {
-            const Point<dim> &x = fe_values.quadrature_point(q);
-            exact_displacement.vector_value(x, u_exact);
-            exact_stress.vector_value(x, sigma_exact);
-            SymmetricTensor<2, dim> sigma =
-              material.stress(eps[q]) + initial_stress(x);
-            if (mohr_coulomb)
-              {
-                const SymmetricTensor<2, 3> s =
-                  plastic_stress(cell->active_cell_index(), q);
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int j = i; j < dim; ++j)
-                    sigma[i][j] -= s[i][j];
-              }
-            const double JxW = fe_values.JxW(q);
-            for (unsigned int i = 0; i < dim; ++i)
-              {
-                u_error2 +=
-                  Utilities::fixed_power<2>(u[q][i] - u_exact[i]) * JxW;
-                u_norm2 += Utilities::fixed_power<2>(u_exact[i]) * JxW;
-                for (unsigned int j = 0; j < dim; ++j)
-                  {
-                    const double s = sigma_exact[i * dim + j];
-                    s_error2 +=
-                      Utilities::fixed_power<2>(sigma[i][j] - s) * JxW;
-                    s_norm2 += s * s * JxW;
-                  }
-              }
-          }
-      }
-
-    ErrorNorms errors;
-    errors.displacement = std::sqrt(u_error2);
-    errors.stress       = std::sqrt(s_error2);
-    errors.displacement_relative =
-      u_norm2 > 0. ? std::sqrt(u_error2 / u_norm2) : errors.displacement;
-    errors.stress_relative =
-      s_norm2 > 0. ? std::sqrt(s_error2 / s_norm2) : errors.stress;
-    return errors;
-  }
-
-
-
-  template <int dim>
-  double
-  Block<dim>::max_displacement() const
-  {
-    // Lagrange elements: nodal values are point values, so the maximum over
-    // the support points is the one a user sees in ParaView.
-    double                               max2 = 0.;
-    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dof_indices);
-        for (unsigned int v = 0; v < fe.base_element(0).n_dofs_per_cell(); ++v)
-          {
-            double norm2 = 0.;
-            for (unsigned int d = 0; d < dim; ++d)
-              norm2 += Utilities::fixed_power<2>(
-                solution(dof_indices[fe.component_to_system_index(d, v)]));
-            max2 = std::max(max2, norm2);
-          }
-      }
-    return std::sqrt(max2);
-  }
-
-
-
-  template <int dim>
-  double
-  Block<dim>::max_von_mises_stress() const
-  {
-    FEValues<dim>                        fe_values(mapping,
-                            fe,
-                            QGauss<dim>(fe.degree + 1),
-                            update_gradients | update_quadrature_points);
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<SymmetricTensor<2, dim>> eps(fe_values.n_quadrature_points);
-    double                               result = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        fe_values.reinit(cell);
-        fe_values[displacement].get_function_symmetric_gradients(solution, eps);
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          {
-            SymmetricTensor<2, 3> sigma = material.stress_3d<dim>(eps[q]);
-            if (in_situ)
-              sigma += in_situ->stress_3d(fe_values.quadrature_point(q));
-            if (mohr_coulomb)
-              sigma -= plastic_stress(cell->active_cell_index(), q);
-            result = std::max(result, von_mises_stress(sigma));
-          }
-      }
-    return result;
+    SymmetricTensor<2, 3> sigma = material.stress_3d<dim>(strain);
+    if (in_situ)
+      sigma += in_situ->stress_3d(point);
+    if (mohr_coulomb)
+      sigma -= plastic_stress(cell, q);
+    return sigma;
   }
 
 

@@ -2,6 +2,7 @@
 #define mbfem_block_block_h
 
 #include <mbfem/block/boundary_conditions.h>
+#include <mbfem/block/floating_modes.h>
 #include <mbfem/linear_algebra/direct_solver.h>
 #include <mbfem/material/in_situ_stress.h>
 #include <mbfem/material/material.h>
@@ -9,6 +10,7 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
@@ -63,15 +65,6 @@ namespace mbfem
 
     PlasticUpdate &
     operator+=(const PlasticUpdate &other);
-  };
-
-  /** L2 errors against a closed-form solution, absolute and relative. */
-  struct ErrorNorms
-  {
-    double displacement          = 0.;
-    double displacement_relative = 0.;
-    double stress                = 0.;
-    double stress_relative       = 0.;
   };
 
   /**
@@ -265,15 +258,6 @@ namespace mbfem
     describe_rigid_body_mode(const Vector<double> &coefficients);
 
     /**
-     * L2 norms of u - u_exact and sigma - sigma_exact (the latter a function
-     * with dim*dim components, row by row), each also relative to the norm
-     * of the exact field.
-     */
-    ErrorNorms
-    compute_errors(const Function<dim> &exact_displacement,
-                   const Function<dim> &exact_stress) const;
-
-    /**
      * The physical constraints alone (no pins), with the prescribed values
      * of the last assemble_load().
      */
@@ -299,13 +283,24 @@ namespace mbfem
     const Vector<double> &
     unpinned_load() const;
 
-    /** Largest displacement magnitude over the support points. */
-    double
-    max_displacement() const;
+    /**
+     * The quadrature of the block's stress state: QGauss(p + 1). The
+     * plastic strain, Newton's tangents and the stresses written to the
+     * output live at its points; every loop over that state uses it.
+     */
+    QGauss<dim>
+    state_quadrature() const;
 
-    /** Largest von Mises stress over the Gauss points. */
-    double
-    max_von_mises_stress() const;
+    /**
+     * The stress (3x3; plane strain in 2D) at @p point for the strain
+     * @p strain: elastic, plus the in-situ stress, minus D eps_p at point
+     * @p q of cell @p cell of state_quadrature() if the block is plastic.
+     */
+    SymmetricTensor<2, 3>
+    stress(const SymmetricTensor<2, dim> &strain,
+           const Point<dim>              &point,
+           const unsigned int             cell,
+           const unsigned int             q) const;
 
     types::global_dof_index
     n_dofs() const;
@@ -359,18 +354,11 @@ namespace mbfem
     /**
      * Physical constraints (hanging nodes, prescribed displacements with
      * their values at the functions' current time, point supports, platens)
-     * and then the pins.
+     * and then @p pins.
      */
     void
-    make_constraints(const BoundaryConditions<dim> &boundary_conditions);
-
-    /** The free modes of the physical constraints (see above). */
-    std::vector<Vector<double>>
-    compute_free_rigid_body_modes() const;
-
-    /** Chooses the pins so that they remove exactly the free modes. */
-    void
-    choose_pins();
+    make_constraints(const BoundaryConditions<dim> &boundary_conditions,
+                     const std::vector<types::global_dof_index> &pins);
 
     /** sigma_0 at @p point, zero without an in-situ stress. */
     SymmetricTensor<2, dim>
@@ -416,20 +404,18 @@ namespace mbfem
     /** Whether the stiffness last assembled used a plastic tangent. */
     bool assembled_plastic_tangent = false;
     /** Initial-stress iterations for the rest of the step (suspend_newton). */
-    bool                                 newton_suspended = false;
-    const InSituStress                  *in_situ          = nullptr;
-    const Excavation                    *excavation       = nullptr;
-    AffineConstraints<double>            physical_constraints;
-    AffineConstraints<double>            constraints;
-    AffineConstraints<double>            homogeneous_constraints;
-    std::vector<Vector<double>>          free_mode_coefficients;
-    std::vector<Vector<double>>          free_modes;
-    std::vector<types::global_dof_index> pins;
-    TrilinosWrappers::SparseMatrix       stiffness;
-    DirectSolver                         direct_solver;
-    Vector<double>                       load;
-    Vector<double>                       external_load;
-    Vector<double>                       physical_load;
+    bool                           newton_suspended = false;
+    const InSituStress            *in_situ          = nullptr;
+    const Excavation              *excavation       = nullptr;
+    AffineConstraints<double>      physical_constraints;
+    AffineConstraints<double>      constraints;
+    AffineConstraints<double>      homogeneous_constraints;
+    FloatingModes<dim>             floating;
+    TrilinosWrappers::SparseMatrix stiffness;
+    DirectSolver                   direct_solver;
+    Vector<double>                 load;
+    Vector<double>                 external_load;
+    Vector<double>                 physical_load;
   };
 } // namespace mbfem
 

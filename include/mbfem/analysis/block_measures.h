@@ -1,0 +1,49 @@
+#ifndef mbfem_analysis_block_measures_h
+#define mbfem_analysis_block_measures_h
+
+#include <mbfem/block/block.h>
+
+#include <deal.II/base/function.h>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /** L2 errors against a closed-form solution, absolute and relative. */
+  struct ErrorNorms
+  {
+    double displacement          = 0.;
+    double displacement_relative = 0.;
+    double stress                = 0.;
+    double stress_relative       = 0.;
+  };
+
+  /**
+   * L2 norms of u - u_exact and sigma - sigma_exact over @p block (the
+   * latter a function with dim*dim components, row by row), each also
+   * relative to the norm of the exact field. Elastic blocks are integrated
+   * with QGauss(p + 3); plastic ones at the points of their stress state,
+   * where their plastic strain is known.
+   */
+  template <int dim>
+  ErrorNorms
+  compute_errors(const Block<dim>    &block,
+                 const Function<dim> &exact_displacement,
+                 const Function<dim> &exact_stress);
+
+  /**
+   * Largest displacement magnitude over the support points (Lagrange
+   * elements: nodal values are point values, so this is the maximum a
+   * user sees in ParaView).
+   */
+  template <int dim>
+  double
+  max_displacement(const Block<dim> &block);
+
+  /** Largest von Mises stress over the points of the stress state. */
+  template <int dim>
+  double
+  max_von_mises_stress(const Block<dim> &block);
+} // namespace mbfem
+
+#endif
