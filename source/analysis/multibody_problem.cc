@@ -1,6 +1,7 @@
 #include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/base/exceptions.h>
 #include <mbfem/base/input_checks.h>
+#include <mbfem/base/interruption.h>
 #include <mbfem/base/parameters.h>
 #include <mbfem/mesh/mesh_checks.h>
 
@@ -301,6 +302,7 @@ namespace mbfem
             if (pair_writer)
               pair_writer->add_step(time, {pair_file});
           }
+        stop_if_signalled(k); // SIGINT/SIGTERM: end here, files complete
       }
 
     if (newton_suspensions > 0)
