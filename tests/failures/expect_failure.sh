@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs mbfem on a bad input and checks that it fails as a user should see:
 #   - a non-zero exit code ('# expect-exit: N' for an exact one),
-#   - every '# expect: REGEX' line of the input matched by stderr,
+#   - every '# expect: REGEX' line of the input matched by stderr, and
+#     every '# expect-stdout: REGEX' line by stdout,
 #   - no deal.II exception dump (source location, stack trace) in stderr,
 #   - every '# expect-file: PATH' present afterwards (results of increments
 #     that converged stay on disk),
@@ -64,6 +65,12 @@ if [ $n_expect -eq 0 ]; then
   echo "FAIL: $input has no '# expect:' line"
   failed=1
 fi
+while IFS= read -r pattern; do
+  if ! grep -E -q -- "$pattern" stdout; then
+    echo "FAIL: the screen output does not match: $pattern"
+    failed=1
+  fi
+done < <(sed -n 's/^# expect-stdout: //p' "$input")
 if grep -E -q -- '^-{20,}|Stacktrace|An error occurred in line' stderr; then
   echo "FAIL: stderr holds a deal.II exception dump, not just the message"
   failed=1
