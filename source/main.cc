@@ -6,11 +6,15 @@
 
 #include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/analysis/order_study.h>
+#include <mbfem/base/interruption.h>
 #include <mbfem/base/parameters.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <string>
 
@@ -42,7 +46,29 @@ namespace
     if (parameters.run.mode == "order study")
       mbfem::OrderStudy<dim>(parameters, pcout).run();
     else
-      mbfem::MultiBodyProblem<dim>(parameters, pcout).run();
+      {
+        // Only the load stepping checks for a signal (between increments).
+        mbfem::catch_termination_signals();
+        mbfem::MultiBodyProblem<dim>(parameters, pcout).run();
+      }
+  }
+
+
+
+  /** What a run stopped by a signal says; main() exits with 128 + it. */
+  int
+  report_signal(const int signal, const std::string &where)
+  {
+    std::cout << std::flush;
+    std::cerr << "\nmbfem: stopped by "
+              << (signal == SIGINT  ? "SIGINT" :
+                  signal == SIGTERM ? "SIGTERM" :
+                                      strsignal(signal))
+              << " " << where
+              << "; the files on disk are complete (the PVD index lists "
+                 "the increments written)."
+              << std::endl;
+    return 128 + signal;
   }
 } // namespace
 
@@ -52,6 +78,9 @@ int
 main(int argc, char *argv[])
 {
   using namespace dealii;
+  // A log written to a file shows each increment as it finishes, and a run
+  // that is killed keeps the lines printed so far.
+  std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -93,6 +122,17 @@ main(int argc, char *argv[])
         run<2>(first, pcout);
       else
         run<3>(first, pcout);
+      if (mbfem::received_signal() != 0)
+        return report_signal(mbfem::received_signal(),
+                             "after the last increment (its summary may be "
+                             "incomplete)");
+    }
+  catch (mbfem::Interrupted &stop)
+    {
+      return report_signal(stop.signal,
+                           "after increment " +
+                             std::to_string(stop.last_complete_increment) +
+                             ", the last complete one");
     }
   catch (ExceptionBase &exc)
     {

@@ -1,7 +1,10 @@
 #include <mbfem/analysis/block_measures.h>
 #include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/base/exceptions.h>
+#include <mbfem/base/input_checks.h>
+#include <mbfem/base/interruption.h>
 #include <mbfem/base/parameters.h>
+#include <mbfem/mesh/mesh_checks.h>
 #include <mbfem/output/interface_report.h>
 #include <mbfem/output/pair_output.h>
 
@@ -36,39 +39,32 @@ namespace mbfem
     TimerOutput::Scope t(timer, "mesh");
     Triangulation<dim> mesh;
     create_mesh(parameters.mesh, mesh);
+    // Everything the input names must exist before anything is built.
+    check_ids_against_mesh(parameters, mesh);
 
     const auto &materials = parameters.block_materials;
     const auto &excavated = parameters.excavation.excavated_ids;
-    const auto  ids       = block_ids(mesh);
-    for (const auto id : excavated)
-      AssertThrow(std::find(ids.begin(), ids.end(), id) != ids.end(),
-                  ExcMessage("Excavation/Excavated material ids lists " +
-                             std::to_string(id) +
-                             ", which is not a material id of the mesh."));
-    for (const auto id : ids)
+    for (const auto id : block_ids(mesh))
       {
         if (std::find(excavated.begin(), excavated.end(), id) !=
             excavated.end())
           continue; // removed rock: not a block
-        Material material = parameters.material;
-        if (!materials.empty())
-          {
-            AssertThrow(materials.count(id) == 1,
-                        ExcMessage("Block " + std::to_string(id) +
-                                   " (material id " + std::to_string(id) +
-                                   " in the mesh) has no material: list it "
-                                   "in 'Material/Block materials'."));
-            material = materials.at(id);
-          }
+        const Material &material =
+          materials.empty() ? parameters.material : materials.at(id);
         blocks.push_back(
           std::make_unique<Block<dim>>(material,
                                        parameters.discretisation,
                                        parameters.linear_solver.package,
                                        id));
-        extract_block(mesh, id, blocks.back()->triangulation);
-        blocks.back()->set_initial_state(&parameters.in_situ_stress,
-                                         &parameters.excavation);
-        blocks.back()->set_plasticity(parameters.plasticity);
+        Block<dim> &block = *blocks.back();
+        extract_block(mesh, id, block.triangulation);
+        check_cell_geometry(block.triangulation,
+                            block.mapping,
+                            block.fe.degree,
+                            block.name());
+        block.set_initial_state(&parameters.in_situ_stress,
+                                &parameters.excavation);
+        block.set_plasticity(parameters.plasticity);
         const InSituStress &in_situ = parameters.in_situ_stress;
         AssertThrow(!in_situ.enabled ||
                       std::abs(material.unit_weight - in_situ.unit_weight) <=
@@ -81,19 +77,10 @@ namespace mbfem
                       ": the in-situ stress would not be in equilibrium with "
                       "gravity. Make them equal."));
       }
-    for (const auto &[id, material] : materials)
-      AssertThrow(std::any_of(blocks.begin(),
-                              blocks.end(),
-                              [id = id](const auto &b) { return b->id == id; }),
-                  ExcMessage("Material/Block materials lists block " +
-                             std::to_string(id) +
-                             ", which is not a material id of the mesh."));
-
-    std::set<types::boundary_id> present;
-    for (const auto &block : blocks)
-      for (const auto id : boundary_ids_of(block->triangulation))
-        present.insert(id);
-    parameters.boundary_conditions.check_boundary_ids(present);
+    check_point_supports(parameters.boundary_conditions,
+                         blocks,
+                         pcout.get_stream());
+    check_functions_are_finite(parameters, blocks);
   }
 
 
@@ -344,6 +331,7 @@ namespace mbfem
         if (pair_writer)
           pair_writer->add_step(time, {pair_file});
       }
+    stop_if_signalled(k); // SIGINT/SIGTERM: end here, files complete
   }
 
 

@@ -1,7 +1,13 @@
+#include <mbfem/base/exceptions.h>
 #include <mbfem/base/parameters.h>
 
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <sstream>
 
 namespace mbfem
 {
@@ -106,6 +112,193 @@ namespace mbfem
                   ExcMessage("Cannot read the parameter file <" + filename +
                              ">."));
     }
+
+    /** Deeper includes are taken to be a cycle that escaped detection. */
+    constexpr unsigned int max_include_depth = 16;
+
+    /**
+     * Deeper JSON is refused: deal.II's reader recurses once per level and
+     * overflows the stack on a few thousand (parameter files have five).
+     */
+    constexpr unsigned int max_json_depth = 32;
+
+    /** Where a line of the expanded text came from. */
+    struct Origin
+    {
+      std::string  file;
+      unsigned int line;
+    };
+
+    /** The text of a line before its comment ('#', not '\#'). */
+    std::string
+    without_comment(const std::string &line)
+    {
+      for (std::size_t i = 0; i < line.size(); ++i)
+        if (line[i] == '#' && (i == 0 || line[i - 1] != '\\'))
+          return Utilities::trim(line.substr(0, i));
+      return Utilities::trim(line);
+    }
+
+    /**
+     * @p path as written in @p file: a relative path is taken from the
+     * folder of @p file, wherever the run is started.
+     */
+    std::filesystem::path
+    resolve(const std::string &path, const std::filesystem::path &file)
+    {
+      const std::filesystem::path written(path);
+      if (written.is_absolute())
+        return written;
+      return (std::filesystem::absolute(file).parent_path() / written)
+        .lexically_normal();
+    }
+
+    /**
+     * Appends @p file to @p out with its includes expanded in place (deal.II
+     * would open them from the working folder) and, in included files, a
+     * relative 'Mesh file' made absolute, so that each relative path is
+     * taken from the folder of the file that writes it.
+     */
+    void
+    expand_includes(const std::filesystem::path        &file,
+                    std::vector<std::filesystem::path> &open,
+                    std::ostringstream                 &out,
+                    std::vector<Origin>                &origins)
+    {
+      std::ifstream in(file);
+      std::string   line;
+      for (unsigned int n = 1; std::getline(in, line); ++n)
+        {
+          const std::string text = without_comment(line);
+          const std::string where =
+            file.string() + ", line " + std::to_string(n) + ": ";
+          if (text.rfind("include ", 0) == 0 || text.rfind("INCLUDE ", 0) == 0)
+            {
+              const auto target =
+                resolve(Utilities::trim(text.substr(8)), file);
+              AssertThrow(std::filesystem::is_regular_file(target) &&
+                            std::ifstream(target).good(),
+                          ExcMessage(where + "cannot read the included file <" +
+                                     target.filename().string() +
+                                     "> in the folder <" +
+                                     target.parent_path().string() +
+                                     "> (a relative path is taken from the "
+                                     "folder of the file that includes it)."));
+              const auto canonical = std::filesystem::canonical(target);
+              AssertThrow(std::find(open.begin(), open.end(), canonical) ==
+                            open.end(),
+                          ExcMessage(where + "<" + target.string() +
+                                     "> includes itself, directly or "
+                                     "through other files."));
+              AssertThrow(open.size() < max_include_depth,
+                          ExcMessage(where + "includes are nested more than " +
+                                     std::to_string(max_include_depth) +
+                                     " deep."));
+              open.push_back(canonical);
+              expand_includes(target, open, out, origins);
+              open.pop_back();
+              continue;
+            }
+          const auto equals = text.find('=');
+          if (open.size() > 1 && text.rfind("set ", 0) == 0 &&
+              equals != std::string::npos &&
+              Utilities::trim(text.substr(4, equals - 4)) == "Mesh file")
+            {
+              const std::string path = Utilities::trim(text.substr(equals + 1));
+              if (!path.empty())
+                line = "set Mesh file = " + resolve(path, file).string();
+            }
+          out << line << '\n';
+          origins.push_back({file.string(), n});
+        }
+    }
+
+    /** deal.II names the line of the expanded text: name the real one. */
+    std::string
+    with_real_lines(const std::string         &message,
+                    const std::vector<Origin> &origins)
+    {
+      const std::regex line_of_file("Line <([0-9]+)> of file <[^>]*>");
+      std::smatch      match;
+      if (!std::regex_search(message, match, line_of_file))
+        return message;
+      const unsigned int line = std::stoul(match[1].str());
+      if (line == 0 || line > origins.size())
+        return message;
+      return match.prefix().str() + "Line <" +
+             std::to_string(origins[line - 1].line) + "> of file <" +
+             origins[line - 1].file + ">" + match.suffix().str();
+    }
+
+    void
+    check_json_depth(const std::string &filename)
+    {
+      std::ifstream in(filename);
+      unsigned int  depth = 0, deepest = 0;
+      bool          in_string = false, escaped = false;
+      for (char c; in.get(c);)
+        {
+          if (in_string)
+            {
+              in_string = escaped || c != '"';
+              escaped   = !escaped && c == '\\';
+            }
+          else if (c == '"')
+            in_string = true;
+          else if (c == '{' || c == '[')
+            deepest = std::max(deepest, ++depth);
+          else if ((c == '}' || c == ']') && depth > 0)
+            --depth;
+        }
+      AssertThrow(deepest <= max_json_depth,
+                  ExcMessage("The JSON file <" + filename + "> is nested " +
+                             std::to_string(deepest) +
+                             " levels deep; a parameter file needs a few, "
+                             "and mbfem reads at most " +
+                             std::to_string(max_json_depth) + "."));
+    }
+
+    /**
+     * Reads @p filename into @p prm: JSON (and XML) as deal.II does, a .prm
+     * file with its includes expanded by expand_includes().
+     */
+    void
+    parse_file(ParameterHandler  &prm,
+               const std::string &filename,
+               const bool         skip_undefined)
+    {
+      check_readable(filename);
+      const std::string extension =
+        std::filesystem::path(filename).extension().string();
+      if (extension == ".json" || extension == ".xml")
+        {
+          if (extension == ".json")
+            check_json_depth(filename);
+          prm.parse_input(filename, "", skip_undefined);
+          return;
+        }
+      std::vector<std::filesystem::path> open = {
+        std::filesystem::canonical(filename)};
+      std::ostringstream  text;
+      std::vector<Origin> origins;
+      expand_includes(filename, open, text, origins);
+      std::istringstream in(text.str());
+      try
+        {
+          prm.parse_input(in, filename, "", skip_undefined);
+        }
+      catch (ExceptionBase &e)
+        {
+          const bool included =
+            std::any_of(origins.begin(), origins.end(), [&](const Origin &o) {
+              return o.file != filename;
+            });
+          if (!included)
+            throw;
+          AssertThrow(false,
+                      ExcMessage(with_real_lines(message_of(e), origins)));
+        }
+    }
   } // namespace
 
 
@@ -113,11 +306,10 @@ namespace mbfem
   unsigned int
   read_dimension(const std::string &filename)
   {
-    check_readable(filename);
     ParameterHandler prm;
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
     // Everything else is read (and checked) by read_parameters().
-    prm.parse_input(filename, "", true);
+    parse_file(prm, filename, true);
     return prm.get_integer("Dimension");
   }
 
@@ -127,10 +319,9 @@ namespace mbfem
   void
   read_parameters(const std::string &filename, Parameters<dim> &parameters)
   {
-    check_readable(filename);
     ParameterHandler prm;
     Parameters<dim>::declare_parameters(prm);
-    prm.parse_input(filename);
+    parse_file(prm, filename, false);
 
     const std::filesystem::path folder =
       std::filesystem::path(filename).parent_path();

@@ -1,3 +1,4 @@
+#include <mbfem/base/input_checks.h>
 #include <mbfem/block/boundary_conditions.h>
 
 #include <deal.II/base/utilities.h>
@@ -102,8 +103,10 @@ namespace mbfem
           AssertThrow(parts.size() == 2,
                       ExcMessage("'" + where + "': cannot read '" + entry +
                                  "'; write 'x,y: components'."));
-          const std::vector<double> x = Utilities::string_to_double(
-            Utilities::split_string_list(parts[0], ','));
+          std::vector<double> x;
+          for (const auto &coordinate :
+               Utilities::split_string_list(parts[0], ','))
+            x.push_back(parse_finite_number(coordinate, where));
           AssertThrow(x.size() == dim,
                       ExcMessage("'" + where + "': '" + parts[0] +
                                  "' is not a point in " + std::to_string(dim) +
@@ -146,18 +149,9 @@ namespace mbfem
   BoundaryConditions<dim>::check_boundary_ids(
     const std::set<types::boundary_id> &present) const
   {
-    std::string present_list;
-    for (const auto id : present)
-      present_list += (present_list.empty() ? "" : ", ") + std::to_string(id);
-
     const auto check = [&](const types::boundary_id id,
                            const std::string       &entry) {
-      AssertThrow(present.count(id) == 1,
-                  ExcMessage("Boundary id " + std::to_string(id) +
-                             " named in 'Boundary conditions/" + entry +
-                             "' is not on the boundary of the mesh, whose "
-                             "boundary ids are: " +
-                             present_list + "."));
+      check_boundary_id(id, "Boundary conditions/" + entry, present);
     };
     for (const auto &[id, mask] : dirichlet)
       check(id, "Prescribed displacement boundary ids");
@@ -188,6 +182,7 @@ namespace mbfem
   {
     auto function =
       std::make_shared<Functions::ParsedFunction<dim>>(n_components);
+    check_function_constants(prm.get("Function constants"), where);
     try
       {
         function->parse_parameters(prm);

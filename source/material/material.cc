@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace mbfem
@@ -91,7 +92,15 @@ namespace mbfem
                                "' needs E, nu and optionally the unit "
                                "weight, as numbers."));
         const int id = Utilities::string_to_int(parts[0]);
-        Material  material;
+        AssertThrow(id >= 0,
+                    ExcMessage("Material/Block materials: '" + parts[0] +
+                               "' is not a material id (0 or more)."));
+        // A block given twice would take one of its values silently.
+        AssertThrow(materials.count(id) == 0,
+                    ExcMessage("Material/Block materials: block " +
+                               std::to_string(id) +
+                               " is listed twice; give each block once."));
+        Material material;
         material.youngs_modulus = values[0];
         material.poissons_ratio = values[1];
         material.unit_weight    = (values.size() == 3 ? values[2] : 0.);
@@ -106,6 +115,10 @@ namespace mbfem
   void
   Material::check(const std::string &where) const
   {
+    AssertThrow(std::isfinite(youngs_modulus) &&
+                  std::isfinite(poissons_ratio) && std::isfinite(unit_weight),
+                ExcMessage(where + ": Young's modulus, Poisson's ratio and "
+                                   "the unit weight must be finite numbers."));
     AssertThrow(youngs_modulus > 0.,
                 ExcMessage(where + ": Young's modulus must be positive, got " +
                            std::to_string(youngs_modulus) + "."));

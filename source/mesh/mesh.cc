@@ -1,3 +1,4 @@
+#include <mbfem/base/exceptions.h>
 #include <mbfem/mesh/mesh.h>
 
 #include <deal.II/base/function_parser.h>
@@ -7,7 +8,10 @@
 #include <deal.II/grid/manifold_lib.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace mbfem
@@ -117,6 +121,114 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /**
+     * The numbers in 'Generator arguments' that deal.II would convert
+     * without a check: a count past 32 bits wraps around to a small or zero
+     * one (4294967296 cells became 0 and crashed), and inf or nan make
+     * non-finite vertices.
+     */
+    void
+    check_generator_numbers(const std::string &arguments)
+    {
+      const std::regex number("[-+]?[0-9.]+([eE][-+]?[0-9]+)?|inf|nan",
+                              std::regex::icase);
+      const std::regex count("[-+]?[0-9]+");
+      for (auto it =
+             std::sregex_iterator(arguments.begin(), arguments.end(), number);
+           it != std::sregex_iterator();
+           ++it)
+        {
+          const std::string text    = it->str();
+          const double      value   = std::strtod(text.c_str(), nullptr);
+          const bool        integer = std::regex_match(text, count);
+          AssertThrow(std::isfinite(value) &&
+                        (!integer || std::abs(value) < 2147483648.),
+                      ExcMessage("Mesh/Generator arguments = '" + arguments +
+                                 "': " + text +
+                                 " is not a number mbfem passes to deal.II "
+                                 "(numbers must be finite, and whole numbers "
+                                 "such as counts of cells below 2^31)."));
+        }
+    }
+
+    /** More cells than a direct solver on one process can handle. */
+    constexpr double max_cells = 1e7;
+
+    /**
+     * The counts of cells of subdivided_hyper_rectangle/cube: deal.II
+     * converts -1 to 4294967295 cells (and runs out of memory) and reads a
+     * list of the wrong length beyond its end.
+     */
+    template <int dim>
+    void
+    check_subdivisions(const std::string &name, const std::string &arguments)
+    {
+      const auto fields = Utilities::split_string_list(arguments, ':');
+      if (name.rfind("subdivided_hyper_", 0) != 0 || fields.empty() ||
+          fields[0].find_first_of(".;eE") != std::string::npos)
+        return; // not counts (step sizes are checked by deal.II)
+      const auto        counts  = Utilities::split_string_list(fields[0], ',');
+      const bool        is_cube = (name == "subdivided_hyper_cube");
+      double            n_cells = 1.;
+      const std::string where =
+        "Mesh/Generator arguments = '" + arguments + "' for " + name + ": ";
+      AssertThrow(counts.size() == (is_cube ? 1u : unsigned(dim)),
+                  ExcMessage(where + "the first argument needs " +
+                             std::to_string(is_cube ? 1 : dim) +
+                             " count(s) of cells, got '" + fields[0] + "'."));
+      for (const auto &count : counts)
+        {
+          const double n = std::strtod(count.c_str(), nullptr);
+          AssertThrow(n >= 1. && n <= max_cells,
+                      ExcMessage(where + "the count of cells '" + count +
+                                 "' must be a whole number from 1 to " +
+                                 std::to_string(int(max_cells)) + "."));
+          n_cells *= (is_cube ? std::pow(n, dim) : n);
+        }
+      AssertThrow(n_cells <= max_cells,
+                  ExcMessage(where + "that makes " + std::to_string(n_cells) +
+                             " cells, more than mbfem can solve (" +
+                             std::to_string(int(max_cells)) + ")."));
+    }
+
+    template <int dim>
+    void
+    generate_mesh(const MeshParameters &parameters,
+                  Triangulation<dim>   &triangulation)
+    {
+      const std::string what =
+        "Mesh/Generator name = '" + parameters.generator_name +
+        "' with Mesh/Generator arguments = '" + parameters.generator_arguments +
+        "' did not make a " + std::to_string(dim) + "D mesh: ";
+      check_generator_numbers(parameters.generator_arguments);
+      check_subdivisions<dim>(parameters.generator_name,
+                              parameters.generator_arguments);
+      // Only the message of deal.II's exception: what() would add the
+      // source location and a stack trace of deal.II's internals.
+      try
+        {
+          GridGenerator::generate_from_name_and_arguments(
+            triangulation,
+            parameters.generator_name,
+            parameters.generator_arguments);
+        }
+      catch (ExceptionBase &e)
+        {
+          AssertThrow(false, ExcMessage(what + Utilities::trim(message_of(e))));
+        }
+      catch (std::exception &e)
+        {
+          AssertThrow(false, ExcMessage(what + e.what()));
+        }
+      AssertThrow(triangulation.n_active_cells() > 0,
+                  ExcMessage(what + "it has no cells."));
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   create_mesh(const MeshParameters &parameters,
@@ -128,7 +240,14 @@ namespace mbfem
         AssertThrow(in.good(),
                     ExcMessage("Cannot open the mesh file <" +
                                parameters.mesh_file +
-                               "> named by 'Mesh/Mesh file'."));
+                               "> named by 'Mesh/Mesh file': looked in the "
+                               "folder <" +
+                               std::filesystem::absolute(parameters.mesh_file)
+                                 .parent_path()
+                                 .lexically_normal()
+                                 .string() +
+                               "> (a relative path is taken from the folder "
+                               "of the parameter file that sets it)."));
         GridIn<dim> grid_in(triangulation);
         try
           {
@@ -146,24 +265,7 @@ namespace mbfem
           }
       }
     else
-      {
-        try
-          {
-            GridGenerator::generate_from_name_and_arguments(
-              triangulation,
-              parameters.generator_name,
-              parameters.generator_arguments);
-          }
-        catch (std::exception &e)
-          {
-            AssertThrow(
-              false,
-              ExcMessage("Mesh/Generator name = '" + parameters.generator_name +
-                         "' with Mesh/Generator arguments = '" +
-                         parameters.generator_arguments + "' did not make a " +
-                         std::to_string(dim) + "D mesh: " + e.what()));
-          }
-      }
+      generate_mesh(parameters, triangulation);
     AssertThrow(triangulation.all_reference_cells_are_hyper_cube(),
                 ExcMessage(
                   "The mesh " +
@@ -232,6 +334,13 @@ namespace mbfem
         triangulation.set_manifold(manifold, SphericalManifold<dim>(c));
         ++manifold;
       }
+    AssertThrow(triangulation.n_active_cells() *
+                    std::pow(2., dim * parameters.initial_refinement) <=
+                  max_cells,
+                ExcMessage("Mesh/Initial global refinement = " +
+                           std::to_string(parameters.initial_refinement) +
+                           " would make more cells than mbfem can solve (" +
+                           std::to_string(int(max_cells)) + ")."));
     triangulation.refine_global(parameters.initial_refinement);
   }
 

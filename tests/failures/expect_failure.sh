@@ -1,24 +1,56 @@
 #!/usr/bin/env bash
 # Runs mbfem on a bad input and checks that it fails as a user should see:
-#   - a non-zero exit code,
-#   - every '# expect: REGEX' line of the input matched by stderr,
+#   - a non-zero exit code ('# expect-exit: N' for an exact one),
+#   - every '# expect: REGEX' line of the input matched by stderr, and
+#     every '# expect-stdout: REGEX' line by stdout,
+#   - no deal.II exception dump (source location, stack trace) in stderr,
 #   - every '# expect-file: PATH' present afterwards (results of increments
 #     that converged stay on disk),
-#   - no partially written file (*.part) left behind.
+#   - no partially written file (*.part) left behind, and every file a PVD
+#     index names present.
+# '# input: FILE' runs mbfem on FILE (relative to the input's folder) instead,
+# for inputs that cannot hold these comments (JSON).
+# '# signal-on: REGEX SIGNAL' sends SIGNAL to mbfem once its stdout matches
+# REGEX (which also shows that the screen output is not held in a buffer).
 # Usage: expect_failure.sh MBFEM INPUT.prm WORKDIR
 set -u
 mbfem=$1
 input=$2
 work=$3
 
+run_input=$input
+alternative=$(sed -n 's/^# input: //p' "$input")
+[ -n "$alternative" ] && run_input=$(dirname "$input")/$alternative
+
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
-"$mbfem" "$input" > stdout 2> stderr
-status=$?
+signal_on=$(sed -n 's/^# signal-on: //p' "$input")
+if [ -n "$signal_on" ]; then
+  pattern=${signal_on% *}
+  signal=${signal_on##* }
+  "$mbfem" "$run_input" > stdout 2> stderr &
+  pid=$!
+  for _ in $(seq 600); do
+    grep -E -q -- "$pattern" stdout && break
+    kill -0 $pid 2> /dev/null || break
+    sleep 0.1
+  done
+  kill -s "$signal" $pid 2> /dev/null
+  wait $pid
+  status=$?
+else
+  "$mbfem" "$run_input" > stdout 2> stderr
+  status=$?
+fi
 cat stdout stderr
 
 failed=0
 if [ $status -eq 0 ]; then
   echo "FAIL: mbfem exited with 0 on a bad input"
+  failed=1
+fi
+expected_status=$(sed -n 's/^# expect-exit: //p' "$input")
+if [ -n "$expected_status" ] && [ "$status" != "$expected_status" ]; then
+  echo "FAIL: exit code $status, expected $expected_status"
   failed=1
 fi
 n_expect=0
@@ -33,6 +65,16 @@ if [ $n_expect -eq 0 ]; then
   echo "FAIL: $input has no '# expect:' line"
   failed=1
 fi
+while IFS= read -r pattern; do
+  if ! grep -E -q -- "$pattern" stdout; then
+    echo "FAIL: the screen output does not match: $pattern"
+    failed=1
+  fi
+done < <(sed -n 's/^# expect-stdout: //p' "$input")
+if grep -E -q -- '^-{20,}|Stacktrace|An error occurred in line' stderr; then
+  echo "FAIL: stderr holds a deal.II exception dump, not just the message"
+  failed=1
+fi
 while IFS= read -r file; do
   if [ ! -s "$file" ]; then
     echo "FAIL: expected output file $file is missing"
@@ -43,5 +85,13 @@ if [ -n "$(find . -name '*.part')" ]; then
   echo "FAIL: partially written files were left behind"
   failed=1
 fi
+while IFS= read -r pvd; do
+  while IFS= read -r file; do
+    if [ ! -s "$(dirname "$pvd")/$file" ]; then
+      echo "FAIL: $pvd names $file, which is not on disk"
+      failed=1
+    fi
+  done < <(sed -n 's/.* file="\([^"]*\)".*/\1/p' "$pvd")
+done < <(find . -name '*.pvd')
 [ $failed -eq 0 ] && echo "PASS: exit code $status, message as expected"
 exit $failed

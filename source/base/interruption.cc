@@ -1,0 +1,52 @@
+#include <mbfem/base/interruption.h>
+
+#include <csignal>
+#include <cstdio>
+
+namespace mbfem
+{
+  namespace
+  {
+    volatile std::sig_atomic_t signal_received = 0;
+
+    extern "C" void
+    record_signal(const int signal)
+    {
+      signal_received = signal;
+    }
+  } // namespace
+
+
+
+  void
+  catch_termination_signals()
+  {
+    struct sigaction action = {};
+    action.sa_handler       = record_signal;
+    sigemptyset(&action.sa_mask);
+    // SA_RESETHAND: a second signal takes the default action (ends the run).
+    action.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+  }
+
+
+
+  int
+  received_signal()
+  {
+    return signal_received;
+  }
+
+
+
+  void
+  stop_if_signalled(const unsigned int last_complete_increment)
+  {
+    // The screen line of the increment reaches a log file now, not when
+    // a buffer fills.
+    std::fflush(stdout);
+    if (signal_received != 0)
+      throw Interrupted{signal_received, last_complete_increment};
+  }
+} // namespace mbfem
