@@ -229,41 +229,134 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /** Reads the gmsh file of 'Mesh/Mesh file' into @p triangulation. */
+    template <int dim>
+    void
+    read_gmsh_mesh(const MeshParameters &parameters,
+                   Triangulation<dim>   &triangulation)
+    {
+      std::ifstream in(parameters.mesh_file);
+      AssertThrow(in.good(),
+                  ExcMessage("Cannot open the mesh file <" +
+                             parameters.mesh_file +
+                             "> named by 'Mesh/Mesh file': looked in the "
+                             "folder <" +
+                             std::filesystem::absolute(parameters.mesh_file)
+                               .parent_path()
+                               .lexically_normal()
+                               .string() +
+                             "> (a relative path is taken from the folder "
+                             "of the parameter file that sets it)."));
+      GridIn<dim> grid_in(triangulation);
+      try
+        {
+          grid_in.read_msh(in);
+        }
+      catch (ExceptionBase &e)
+        {
+          std::ostringstream message;
+          e.print_info(message);
+          AssertThrow(false,
+                      ExcMessage("Could not read the gmsh file <" +
+                                 parameters.mesh_file + "> as a " +
+                                 std::to_string(dim) +
+                                 "D mesh: " + message.str()));
+        }
+    }
+
+
+
+    /**
+     * Material id = block: from 'Mesh/Block id function' if given, else 0
+     * for a generated mesh (gmsh meshes keep their physical groups).
+     */
+    template <int dim>
+    void
+    assign_block_ids(const MeshParameters &parameters,
+                     Triangulation<dim>   &triangulation)
+    {
+      if (!parameters.block_id_function.empty())
+        {
+          FunctionParser<dim> block_id;
+          try
+            {
+              block_id.initialize(FunctionParser<dim>::default_variable_names(),
+                                  parameters.block_id_function,
+                                  {});
+              block_id.value(Point<dim>());
+            }
+          catch (ExceptionBase &e)
+            {
+              std::ostringstream message;
+              e.print_info(message);
+              AssertThrow(false,
+                          ExcMessage("Mesh/Block id function '" +
+                                     parameters.block_id_function +
+                                     "' cannot be parsed: " + message.str()));
+            }
+          for (const auto &cell : triangulation.active_cell_iterators())
+            {
+              const double id = std::round(block_id.value(cell->center()));
+              AssertThrow(id >= 0. && id < 10000.,
+                          ExcMessage("Mesh/Block id function gives " +
+                                     std::to_string(id) + " at (" +
+                                     Utilities::to_string(cell->center()[0]) +
+                                     ", ...): block ids are 0 to 9999."));
+              cell->set_material_id(static_cast<types::material_id>(id));
+            }
+        }
+      else if (parameters.source == "generator")
+        for (const auto &cell : triangulation.active_cell_iterators())
+          cell->set_material_id(0);
+    }
+
+
+
+    /** A SphericalManifold on each face set of 'Mesh/Circular boundaries'. */
+    template <int dim>
+    void
+    attach_circular_boundaries(const MeshParameters &parameters,
+                               Triangulation<dim>   &triangulation)
+    {
+      types::manifold_id manifold = 100;
+      for (const auto &[id, centre] : parameters.circular_boundaries)
+        {
+          AssertThrow(centre.size() == dim,
+                      ExcMessage(
+                        "Mesh/Circular boundaries: the centre for id " +
+                        std::to_string(id) + " needs " + std::to_string(dim) +
+                        " coordinates."));
+          Point<dim> c;
+          for (unsigned int d = 0; d < dim; ++d)
+            c[d] = centre[d];
+          bool found = false;
+          for (const auto &face : triangulation.active_face_iterators())
+            if (face->at_boundary() && face->boundary_id() == id)
+              {
+                face->set_all_manifold_ids(manifold);
+                found = true;
+              }
+          AssertThrow(found,
+                      ExcMessage("Mesh/Circular boundaries: the mesh has no "
+                                 "face with boundary id " +
+                                 std::to_string(id) + "."));
+          triangulation.set_manifold(manifold, SphericalManifold<dim>(c));
+          ++manifold;
+        }
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   create_mesh(const MeshParameters &parameters,
               Triangulation<dim>   &triangulation)
   {
     if (parameters.source == "gmsh")
-      {
-        std::ifstream in(parameters.mesh_file);
-        AssertThrow(in.good(),
-                    ExcMessage("Cannot open the mesh file <" +
-                               parameters.mesh_file +
-                               "> named by 'Mesh/Mesh file': looked in the "
-                               "folder <" +
-                               std::filesystem::absolute(parameters.mesh_file)
-                                 .parent_path()
-                                 .lexically_normal()
-                                 .string() +
-                               "> (a relative path is taken from the folder "
-                               "of the parameter file that sets it)."));
-        GridIn<dim> grid_in(triangulation);
-        try
-          {
-            grid_in.read_msh(in);
-          }
-        catch (ExceptionBase &e)
-          {
-            std::ostringstream message;
-            e.print_info(message);
-            AssertThrow(false,
-                        ExcMessage("Could not read the gmsh file <" +
-                                   parameters.mesh_file + "> as a " +
-                                   std::to_string(dim) +
-                                   "D mesh: " + message.str()));
-          }
-      }
+      read_gmsh_mesh(parameters, triangulation);
     else
       generate_mesh(parameters, triangulation);
     AssertThrow(triangulation.all_reference_cells_are_hyper_cube(),
@@ -276,64 +369,8 @@ namespace mbfem
                   "need quadrilaterals or hexahedra (in gmsh: "
                   "Mesh.RecombineAll = 1 and Mesh.SubdivisionAlgorithm "
                   "= 1 or 2)."));
-    if (!parameters.block_id_function.empty())
-      {
-        FunctionParser<dim> block_id;
-        try
-          {
-            block_id.initialize(FunctionParser<dim>::default_variable_names(),
-                                parameters.block_id_function,
-                                {});
-            block_id.value(Point<dim>());
-          }
-        catch (ExceptionBase &e)
-          {
-            std::ostringstream message;
-            e.print_info(message);
-            AssertThrow(false,
-                        ExcMessage("Mesh/Block id function '" +
-                                   parameters.block_id_function +
-                                   "' cannot be parsed: " + message.str()));
-          }
-        for (const auto &cell : triangulation.active_cell_iterators())
-          {
-            const double id = std::round(block_id.value(cell->center()));
-            AssertThrow(id >= 0. && id < 10000.,
-                        ExcMessage("Mesh/Block id function gives " +
-                                   std::to_string(id) + " at (" +
-                                   Utilities::to_string(cell->center()[0]) +
-                                   ", ...): block ids are 0 to 9999."));
-            cell->set_material_id(static_cast<types::material_id>(id));
-          }
-      }
-    else if (parameters.source == "generator")
-      for (const auto &cell : triangulation.active_cell_iterators())
-        cell->set_material_id(0);
-
-    types::manifold_id manifold = 100;
-    for (const auto &[id, centre] : parameters.circular_boundaries)
-      {
-        AssertThrow(centre.size() == dim,
-                    ExcMessage("Mesh/Circular boundaries: the centre for id " +
-                               std::to_string(id) + " needs " +
-                               std::to_string(dim) + " coordinates."));
-        Point<dim> c;
-        for (unsigned int d = 0; d < dim; ++d)
-          c[d] = centre[d];
-        bool found = false;
-        for (const auto &face : triangulation.active_face_iterators())
-          if (face->at_boundary() && face->boundary_id() == id)
-            {
-              face->set_all_manifold_ids(manifold);
-              found = true;
-            }
-        AssertThrow(found,
-                    ExcMessage("Mesh/Circular boundaries: the mesh has no "
-                               "face with boundary id " +
-                               std::to_string(id) + "."));
-        triangulation.set_manifold(manifold, SphericalManifold<dim>(c));
-        ++manifold;
-      }
+    assign_block_ids(parameters, triangulation);
+    attach_circular_boundaries(parameters, triangulation);
     AssertThrow(triangulation.n_active_cells() *
                     std::pow(2., dim * parameters.initial_refinement) <=
                   max_cells,
