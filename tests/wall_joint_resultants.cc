@@ -66,9 +66,6 @@ check(const std::string &name,
   mbfem::Parameters<dim> parameters;
   const auto   problem  = run<dim>(input(name, formulation), parameters);
   const auto  *contact  = problem->get_contact();
-  const double top      = (dim == 2 ? 2.5 : 2.);
-  const double width    = (dim == 2 ? 4. : 3.);
-  const double depth    = (dim == 2 ? 1. : 2.);
   double       worst    = 0.;
   unsigned int n_joints = 0;
   for (double level = 0.5; level < top - 1e-9; level += 0.5, ++n_joints)
