@@ -540,10 +540,16 @@ namespace mbfem
     add_shared_faces(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
                      ContactParameters                              &parameters)
     {
+      // Only neighbours that are blocks of the model: an excavated one is
+      // not, and the faces it leaves are free surfaces.
+      std::set<unsigned int> ids;
+      for (const auto &block : blocks)
+        ids.insert(block->id);
       std::set<std::pair<unsigned int, unsigned int>> neighbours;
       for (const auto &block : blocks)
         for (const auto id : boundary_ids_of(block->triangulation))
-          if (id >= interface_boundary_id(0))
+          if (id >= interface_boundary_id(0) &&
+              ids.count(id - interface_boundary_id(0)) > 0)
             {
               const unsigned int other = id - interface_boundary_id(0);
               neighbours.emplace(std::min<unsigned int>(block->id, other),
