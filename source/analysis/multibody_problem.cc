@@ -91,7 +91,7 @@ namespace mbfem
   {
     // The monolithic formulation alone factorises no block: its one system
     // holds them all.
-    const bool factorise = parameters.contact.interfaces.empty() ||
+    const bool factorise = !parameters.contact.declares_interfaces() ||
                            parameters.contact.runs_condensed();
     parameters.boundary_conditions.set_time(0.);
     for (const auto &block : blocks)
@@ -209,7 +209,7 @@ namespace mbfem
   MultiBodyProblem<dim>::make_contact()
   {
     std::vector<ContactPair<dim>> pairs;
-    if (!parameters.contact.interfaces.empty())
+    if (parameters.contact.declares_interfaces())
       pairs = find_contact_pairs(blocks, parameters.contact, pcout);
     check_blocks_held(pairs);
 

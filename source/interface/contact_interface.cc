@@ -1,5 +1,6 @@
 #include <mbfem/block/boundary_conditions.h>
 #include <mbfem/interface/contact_interface.h>
+#include <mbfem/interface/cross_points.h>
 #include <mbfem/mesh/mesh.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -8,6 +9,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace mbfem
@@ -24,13 +26,37 @@ namespace mbfem
         "Contact interfaces separated by ';'. 'blocks 1:2' is the surface "
         "that blocks (material ids) 1 and 2 share in the mesh; 'boundaries "
         "3:4' pairs the faces with boundary id 3 (side a) with those with "
-        "id 4 (side b), which may be separated by a gap. Pairs are formed "
-        "at the support points of the elements.");
+        "id 4 (side b), which may be separated by a gap. 'all' is every "
+        "surface two blocks share (a jointed rock mass, a wall of blocks: "
+        "one interface per pair of neighbouring blocks, side a the lower "
+        "block id), with the law of its joint set ('Joint sets') or the "
+        "values below; it may be followed by 'boundaries' entries. Pairs "
+        "are formed at the support points of the elements; where three or "
+        "more blocks meet, one pair of each loop is merged into its "
+        "neighbour (doc/jointed_rock.md).");
       prm.declare_entry("Friction coefficient",
                         "0.5",
                         Patterns::List(Patterns::Double(0.)),
                         "mu of each interface (one value for all, or one "
-                        "per interface in order).");
+                        "per interface in order). With 'Interfaces = all' "
+                        "one value: the default for joints no joint set "
+                        "claims.");
+      prm.declare_entry(
+        "Joint sets",
+        "",
+        Patterns::Anything(),
+        "Laws of the joint sets, for 'Interfaces = all': sets separated by "
+        "';', each 'name: key value, ...' with the keys dip, dip direction, "
+        "tolerance (degrees, default 5), friction, cohesion, tensile "
+        "strength, e.g. 'bedding: dip 0, friction 0.7; cross: dip 90, dip "
+        "direction 90, friction 0.5, cohesion 0.1'. An interface belongs to "
+        "the first set whose plane is within the tolerance of its mean "
+        "plane (whichever side is up); strengths not given, and interfaces "
+        "no set claims, take 'Friction coefficient', 'Cohesion' and "
+        "'Tensile strength'. Dip is from the horizontal, 0 to 90; dip "
+        "direction the azimuth towards which the plane dips, clockwise from "
+        "+y (north) in 3D; in 2D (x east, y up) 90 dips towards +x and 270 "
+        "towards -x.");
       prm.declare_entry("Cohesion",
                         "0",
                         Patterns::List(Patterns::Double(0.)),
@@ -123,9 +149,19 @@ namespace mbfem
     prm.enter_subsection("Contact");
     {
       interfaces.clear();
+      all_shared_faces = false;
       for (const auto &entry :
            Utilities::split_string_list(prm.get("Interfaces"), ';'))
         {
+          if (entry == "all")
+            {
+              AssertThrow(!all_shared_faces && interfaces.empty(),
+                          ExcMessage("Contact/Interfaces: 'all' comes "
+                                     "first and once, then 'boundaries' "
+                                     "entries if any."));
+              all_shared_faces = true;
+              continue;
+            }
           InterfaceDeclaration declaration;
           declaration.description = entry;
           std::istringstream in(entry);
@@ -137,25 +173,41 @@ namespace mbfem
                       ExcMessage("Contact/Interfaces: cannot read '" + entry +
                                  "'; write 'blocks 1:2' or 'boundaries 3:4'."));
           declaration.by_blocks = (kind == "blocks");
-          declaration.side_a    = Utilities::string_to_int(ids[0]);
-          declaration.side_b    = Utilities::string_to_int(ids[1]);
+          AssertThrow(!(all_shared_faces && declaration.by_blocks),
+                      ExcMessage("Contact/Interfaces: '" + entry +
+                                 "' after 'all', which has every surface "
+                                 "two blocks share already; give joints "
+                                 "their laws with 'Joint sets'."));
+          declaration.side_a = Utilities::string_to_int(ids[0]);
+          declaration.side_b = Utilities::string_to_int(ids[1]);
           interfaces.push_back(declaration);
         }
-      const unsigned int n  = interfaces.size();
-      const auto         mu = per_interface(prm.get("Friction coefficient"),
-                                    std::max(n, 1u),
+      // With 'all', one value for every interface: the declared ones and
+      // the default of the found ones.
+      const unsigned int n =
+        (all_shared_faces ? 1 : std::max<unsigned int>(interfaces.size(), 1));
+      const auto mu = per_interface(prm.get("Friction coefficient"),
+                                    n,
                                     "Friction coefficient");
-      const auto         c =
-        per_interface(prm.get("Cohesion"), std::max(n, 1u), "Cohesion");
-      const auto st = per_interface(prm.get("Tensile strength"),
-                                    std::max(n, 1u),
-                                    "Tensile strength");
-      for (unsigned int i = 0; i < n; ++i)
+      const auto c  = per_interface(prm.get("Cohesion"), n, "Cohesion");
+      const auto st =
+        per_interface(prm.get("Tensile strength"), n, "Tensile strength");
+      for (unsigned int i = 0; i < interfaces.size(); ++i)
         {
-          interfaces[i].joint.friction_coefficient = mu[i];
-          interfaces[i].joint.cohesion             = c[i];
-          interfaces[i].joint.tensile_strength     = st[i];
+          const unsigned int j                     = (all_shared_faces ? 0 : i);
+          interfaces[i].joint.friction_coefficient = mu[j];
+          interfaces[i].joint.cohesion             = c[j];
+          interfaces[i].joint.tensile_strength     = st[j];
         }
+      default_joint.friction_coefficient = mu[0];
+      default_joint.cohesion             = c[0];
+      default_joint.tensile_strength     = st[0];
+      joint_sets = parse_joint_sets(prm.get("Joint sets"), default_joint);
+      AssertThrow(joint_sets.empty() || all_shared_faces,
+                  ExcMessage("Contact/Joint sets are the laws of the "
+                             "interfaces found by 'Interfaces = all'; "
+                             "declared interfaces take 'Friction "
+                             "coefficient' etc. one by one."));
       search_distance          = prm.get_double("Search distance");
       max_iterations           = prm.get_integer("Maximum iterations");
       const std::string choice = prm.get("Formulation");
@@ -295,6 +347,363 @@ namespace mbfem
         out << " ...";
       return out.str();
     }
+
+
+    /**
+     * The nodes of both sides of @p declaration: side[0] on side a, side[1]
+     * on side b. Throws if a side has no faces.
+     */
+    template <int dim>
+    void
+    collect_sides(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+                  const InterfaceDeclaration                     &declaration,
+                  std::vector<InterfaceNode<dim>>                 side[2])
+    {
+      for (unsigned int s = 0; s < 2; ++s)
+        {
+          const unsigned int own =
+            (s == 0 ? declaration.side_a : declaration.side_b);
+          const unsigned int other =
+            (s == 0 ? declaration.side_b : declaration.side_a);
+          for (unsigned int b = 0; b < blocks.size(); ++b)
+            if (!declaration.by_blocks)
+              collect_nodes(*blocks[b], b, own, side[s]);
+            else if (blocks[b]->id == own)
+              collect_nodes(*blocks[b],
+                            b,
+                            interface_boundary_id(other),
+                            side[s]);
+          AssertThrow(!side[s].empty(),
+                      ExcMessage(
+                        "Contact interface '" + declaration.description +
+                        "': side " + std::to_string(own) +
+                        " has no faces in the mesh" +
+                        (declaration.by_blocks ?
+                           " shared with block " + std::to_string(other) :
+                           std::string(" with that boundary id")) +
+                        "."));
+        }
+    }
+
+
+
+    /**
+     * Partner of every node on each side: among the nodes within @p reach,
+     * the one that faces it best, i.e. whose joining line deviates least
+     * from the common normal of the two surfaces (the bisector of the two
+     * outward normals). For coincident nodes this is the nearest one;
+     * across a gap between curved surfaces the nearest node can be a
+     * neighbour of the facing one.
+     */
+    template <int dim>
+    void
+    find_partners(const std::vector<InterfaceNode<dim>> side[2],
+                  const double                          reach,
+                  const double                          coincident,
+                  std::vector<unsigned int>             nearest[2],
+                  std::vector<double>                   distance[2])
+    {
+      for (unsigned int s = 0; s < 2; ++s)
+        {
+          const auto &mine   = side[s];
+          const auto &theirs = side[1 - s];
+          nearest[s].assign(mine.size(), numbers::invalid_unsigned_int);
+          distance[s].assign(mine.size(), std::numeric_limits<double>::max());
+          for (unsigned int i = 0; i < mine.size(); ++i)
+            {
+              double best_offset       = std::numeric_limits<double>::max();
+              const Tensor<1, dim> n_i = mine[i].normal / mine[i].normal.norm();
+              for (unsigned int j = 0; j < theirs.size(); ++j)
+                {
+                  const Tensor<1, dim> d      = theirs[j].point - mine[i].point;
+                  const double         length = d.norm();
+                  if (length > reach)
+                    continue;
+                  Tensor<1, dim> common =
+                    n_i - theirs[j].normal / theirs[j].normal.norm();
+                  common /= common.norm();
+                  const double offset =
+                    (length <= coincident ? 0. :
+                                            (d - (d * common) * common).norm());
+                  if (offset < best_offset - 1e-12 * reach ||
+                      (offset < best_offset + 1e-12 * reach &&
+                       length < distance[s][i]))
+                    {
+                      best_offset    = offset;
+                      nearest[s][i]  = j;
+                      distance[s][i] = length;
+                    }
+                }
+            }
+        }
+    }
+
+
+
+    /** The pair of nodes @p a and @p b at distance @p d, on interface @p k. */
+    template <int dim>
+    ContactPair<dim>
+    make_pair_of_nodes(const InterfaceNode<dim> &a,
+                       const InterfaceNode<dim> &b,
+                       const double              d,
+                       const double              coincident,
+                       const unsigned int        k)
+    {
+      ContactPair<dim> pair;
+      pair.interface = k;
+      pair.a.block   = a.block;
+      pair.a.nodes   = {{a.dofs, 1.}};
+      pair.a.point   = a.point;
+      pair.b.block   = b.block;
+      pair.b.nodes   = {{b.dofs, 1.}};
+      pair.b.point   = b.point;
+      if (d <= coincident)
+        {
+          pair.frame       = make_frame(a.normal);
+          pair.initial_gap = 0.;
+        }
+      else
+        {
+          pair.frame       = make_frame<dim>(b.point - a.point);
+          pair.initial_gap = d;
+        }
+      pair.area = 0.5 * (a.area + b.area);
+      return pair;
+    }
+
+
+
+    /**
+     * The pairs of interface @p k, appended to @p pairs; throws with the
+     * nodes left without a partner or matched ambiguously.
+     */
+    template <int dim>
+    void
+    pair_interface(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+                   const ContactParameters                        &parameters,
+                   const unsigned int                              k,
+                   const double                                    coincident,
+                   std::vector<ContactPair<dim>>                  &pairs)
+    {
+      const InterfaceDeclaration     &declaration = parameters.interfaces[k];
+      std::vector<InterfaceNode<dim>> side[2];
+      collect_sides(blocks, declaration, side);
+      const double reach = std::max(coincident, parameters.search_distance);
+      std::vector<unsigned int> nearest[2];
+      std::vector<double>       distance[2];
+      find_partners(side, reach, coincident, nearest, distance);
+
+      std::vector<Point<dim>> unmatched, ambiguous;
+      std::vector<bool>       b_used(side[1].size(), false);
+      for (unsigned int i = 0; i < side[0].size(); ++i)
+        {
+          const unsigned int j = nearest[0][i];
+          if (j == numbers::invalid_unsigned_int)
+            unmatched.push_back(side[0][i].point);
+          else if (nearest[1][j] != i)
+            ambiguous.push_back(side[0][i].point);
+          else
+            {
+              b_used[j] = true;
+              pairs.push_back(make_pair_of_nodes(
+                side[0][i], side[1][j], distance[0][i], coincident, k));
+            }
+        }
+      for (unsigned int j = 0; j < side[1].size(); ++j)
+        if (!b_used[j])
+          unmatched.push_back(side[1][j].point);
+
+      AssertThrow(unmatched.empty() && ambiguous.empty(),
+                  ExcMessage(
+                    "Contact interface '" + declaration.description +
+                    "': " + std::to_string(unmatched.size()) +
+                    " node(s) have no partner within the search distance " +
+                    std::to_string(parameters.search_distance) +
+                    (unmatched.empty() ? "" : ":" + list_points(unmatched)) +
+                    "; " + std::to_string(ambiguous.size()) +
+                    " node(s) are not the nearest of their nearest node" +
+                    (ambiguous.empty() ? "" : ":" + list_points(ambiguous)) +
+                    ". Both sides need nodes facing each other one to one "
+                    "(matching meshes), and 'Contact/Search distance' at "
+                    "least the largest initial gap."));
+    }
+
+
+
+    /**
+     * 'Interfaces = all': adds to @p parameters, before the declared
+     * 'boundaries' entries, one interface per pair of blocks that share
+     * faces in the mesh (side a the lower block id).
+     */
+    template <int dim>
+    void
+    add_shared_faces(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+                     ContactParameters                              &parameters)
+    {
+      // Only neighbours that are blocks of the model: an excavated one is
+      // not, and the faces it leaves are free surfaces.
+      std::set<unsigned int> ids;
+      for (const auto &block : blocks)
+        ids.insert(block->id);
+      std::set<std::pair<unsigned int, unsigned int>> neighbours;
+      for (const auto &block : blocks)
+        for (const auto id : boundary_ids_of(block->triangulation))
+          if (id >= interface_boundary_id(0) &&
+              ids.count(id - interface_boundary_id(0)) > 0)
+            {
+              const unsigned int other = id - interface_boundary_id(0);
+              neighbours.emplace(std::min<unsigned int>(block->id, other),
+                                 std::max<unsigned int>(block->id, other));
+            }
+      std::vector<InterfaceDeclaration> found;
+      for (const auto &[a, b] : neighbours)
+        {
+          InterfaceDeclaration declaration;
+          declaration.by_blocks = true;
+          declaration.side_a    = a;
+          declaration.side_b    = b;
+          declaration.found     = true;
+          declaration.joint     = parameters.default_joint;
+          declaration.description =
+            "blocks " + std::to_string(a) + ":" + std::to_string(b);
+          found.push_back(declaration);
+        }
+      AssertThrow(!found.empty(),
+                  ExcMessage("Contact/Interfaces = all, but no two blocks "
+                             "share a face in the mesh."));
+      parameters.interfaces.insert(parameters.interfaces.begin(),
+                                   found.begin(),
+                                   found.end());
+    }
+
+
+
+    /**
+     * The law of found interface @p k: that of the first joint set that
+     * contains its mean plane (area-weighted normal of its pairs), or the
+     * default. Sets the interface's and its pairs' laws.
+     */
+    template <int dim>
+    void
+    assign_joint_set(ContactParameters             &parameters,
+                     const unsigned int             k,
+                     std::vector<ContactPair<dim>> &pairs,
+                     const unsigned int             first_pair)
+    {
+      InterfaceDeclaration &declaration = parameters.interfaces[k];
+      if (declaration.found)
+        {
+          Tensor<1, dim> normal;
+          for (unsigned int p = first_pair; p < pairs.size(); ++p)
+            normal += pairs[p].area * pairs[p].frame[0];
+          for (const auto &set : parameters.joint_sets)
+            if (set.contains(normal))
+              {
+                declaration.joint     = set.joint;
+                declaration.joint_set = set.name;
+                break;
+              }
+        }
+      for (unsigned int p = first_pair; p < pairs.size(); ++p)
+        pairs[p].joint = declaration.joint;
+    }
+
+
+
+    /** One line per interface; with many found ones, a count per set. */
+    template <int dim>
+    void
+    print_interfaces(const ContactParameters             &parameters,
+                     const std::vector<ContactPair<dim>> &pairs,
+                     ConditionalOStream                  &pcout)
+    {
+      const unsigned int        n = parameters.interfaces.size();
+      std::vector<unsigned int> n_pairs(n, 0), n_gap(n, 0);
+      std::vector<double>       area(n, 0.);
+      for (const auto &pair : pairs)
+        {
+          ++n_pairs[pair.interface];
+          n_gap[pair.interface] += (pair.initial_gap > 0.);
+          area[pair.interface] += pair.area;
+        }
+      std::map<std::string, std::array<double, 2>> per_set;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const auto &declaration = parameters.interfaces[k];
+          if (declaration.found && n > 20)
+            {
+              auto &entry = per_set[declaration.joint_set];
+              entry[0] += 1;
+              entry[1] += n_pairs[k];
+              continue;
+            }
+          pcout << "  interface " << k + 1 << " (" << declaration.description
+                << (declaration.joint_set.empty() ?
+                      "" :
+                      ", joint set " + declaration.joint_set)
+                << "): " << n_pairs[k] << " pairs (" << n_pairs[k] - n_gap[k]
+                << " coincident, " << n_gap[k] << " with a gap), area "
+                << area[k]
+                << ", mu = " << declaration.joint.friction_coefficient
+                << ", c = " << declaration.joint.cohesion
+                << ", sigma_t = " << declaration.joint.tensile_strength << "\n";
+        }
+      for (const auto &[name, count] : per_set)
+        pcout << "  " << count[0] << " interfaces between blocks ("
+              << (name.empty() ? "no joint set: the default law" :
+                                 "joint set " + name)
+              << "), " << count[1] << " pairs\n";
+    }
+
+
+
+    /**
+     * A pair whose two nodes are both fixed in one global direction that
+     * is oblique to the pair's frame (an inclined fault meeting a roller
+     * boundary) has fewer free relative motions than contact conditions.
+     * It is tied (ContactPair::tied), and said so.
+     */
+    template <int dim>
+    void
+    tie_oblique_pairs(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+                      std::vector<ContactPair<dim>>                  &pairs,
+                      ConditionalOStream                             &pcout)
+    {
+      unsigned int n_tied     = 0;
+      const auto   fixed_side = [&](const PairSide<dim> &side,
+                                  const unsigned int   c) {
+        const auto &constraints =
+          blocks[side.block]->get_physical_constraints();
+        return std::all_of(
+          side.nodes.begin(), side.nodes.end(), [&](const auto &node) {
+            return constraints.is_constrained(node.dofs[c]) &&
+                   constraints.get_constraint_entries(node.dofs[c])->empty();
+          });
+      };
+      for (auto &pair : pairs)
+        {
+          bool oblique_support = false;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              const bool fixed = fixed_side(pair.a, c) && fixed_side(pair.b, c);
+              bool       aligned = false;
+              for (unsigned int i = 0; i < dim; ++i)
+                aligned |= std::abs(std::abs(pair.frame[i][c]) - 1.) < 1e-10;
+              oblique_support |= fixed && !aligned;
+            }
+          if (oblique_support)
+            {
+              ++n_tied;
+              pair.tied  = true;
+              pair.frame = unit_symmetric_tensor<dim>();
+            }
+        }
+      if (n_tied > 0)
+        pcout << "  " << n_tied
+              << " pair(s) tied: both nodes on a support fixing a direction "
+                 "oblique to the interface; they stick in the free direction "
+                 "and the support carries the rest\n";
+    }
   } // namespace
 
 
@@ -302,9 +711,15 @@ namespace mbfem
   template <int dim>
   std::vector<ContactPair<dim>>
   find_contact_pairs(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
-                     const ContactParameters                        &parameters,
+                     ContactParameters                              &parameters,
                      ConditionalOStream                             &pcout)
   {
+    if (parameters.all_shared_faces &&
+        std::none_of(parameters.interfaces.begin(),
+                     parameters.interfaces.end(),
+                     [](const auto &i) { return i.found; }))
+      add_shared_faces(blocks, parameters);
+
     double size = 0.;
     for (const auto &block : blocks)
       size = std::max(size, GridTools::diameter(block->triangulation));
@@ -313,188 +728,20 @@ namespace mbfem
     std::vector<ContactPair<dim>> pairs;
     for (unsigned int k = 0; k < parameters.interfaces.size(); ++k)
       {
-        const InterfaceDeclaration     &declaration = parameters.interfaces[k];
-        std::vector<InterfaceNode<dim>> side[2];
-        for (unsigned int s = 0; s < 2; ++s)
-          {
-            const unsigned int own =
-              (s == 0 ? declaration.side_a : declaration.side_b);
-            const unsigned int other =
-              (s == 0 ? declaration.side_b : declaration.side_a);
-            for (unsigned int b = 0; b < blocks.size(); ++b)
-              if (!declaration.by_blocks)
-                collect_nodes(*blocks[b], b, own, side[s]);
-              else if (blocks[b]->id == own)
-                collect_nodes(*blocks[b],
-                              b,
-                              interface_boundary_id(other),
-                              side[s]);
-            AssertThrow(!side[s].empty(),
-                        ExcMessage(
-                          "Contact interface '" + declaration.description +
-                          "': side " + std::to_string(own) +
-                          " has no faces in the mesh" +
-                          (declaration.by_blocks ?
-                             " shared with block " + std::to_string(other) :
-                             std::string(" with that boundary id")) +
-                          "."));
-          }
-
-        // Partner of every node on each side: among the nodes within the
-        // search distance, the one that faces it best, i.e. whose joining
-        // line deviates least from the common normal of the two surfaces
-        // (the bisector of the two outward normals). For coincident nodes
-        // this is the nearest one; across a gap between curved surfaces
-        // the nearest node can be a neighbour of the facing one.
-        const double reach = std::max(coincident, parameters.search_distance);
-        std::vector<unsigned int> nearest[2];
-        std::vector<double>       distance[2];
-        for (unsigned int s = 0; s < 2; ++s)
-          {
-            const auto &mine   = side[s];
-            const auto &theirs = side[1 - s];
-            nearest[s].assign(mine.size(), numbers::invalid_unsigned_int);
-            distance[s].assign(mine.size(), std::numeric_limits<double>::max());
-            for (unsigned int i = 0; i < mine.size(); ++i)
-              {
-                double best_offset = std::numeric_limits<double>::max();
-                const Tensor<1, dim> n_i =
-                  mine[i].normal / mine[i].normal.norm();
-                for (unsigned int j = 0; j < theirs.size(); ++j)
-                  {
-                    const Tensor<1, dim> d = theirs[j].point - mine[i].point;
-                    const double         length = d.norm();
-                    if (length > reach)
-                      continue;
-                    Tensor<1, dim> common =
-                      n_i - theirs[j].normal / theirs[j].normal.norm();
-                    common /= common.norm();
-                    const double offset =
-                      (length <= coincident ?
-                         0. :
-                         (d - (d * common) * common).norm());
-                    if (offset < best_offset - 1e-12 * reach ||
-                        (offset < best_offset + 1e-12 * reach &&
-                         length < distance[s][i]))
-                      {
-                        best_offset    = offset;
-                        nearest[s][i]  = j;
-                        distance[s][i] = length;
-                      }
-                  }
-              }
-          }
-
-        std::vector<Point<dim>> unmatched, ambiguous;
-        unsigned int            n_coincident = 0, n_gap = 0;
-        double                  total_area = 0.;
-        std::vector<bool>       b_used(side[1].size(), false);
-        for (unsigned int i = 0; i < side[0].size(); ++i)
-          {
-            const unsigned int j = nearest[0][i];
-            const double       d = distance[0][i];
-            if (j == numbers::invalid_unsigned_int)
-              {
-                unmatched.push_back(side[0][i].point);
-                continue;
-              }
-            if (nearest[1][j] != i)
-              {
-                ambiguous.push_back(side[0][i].point);
-                continue;
-              }
-            b_used[j]                   = true;
-            const InterfaceNode<dim> &a = side[0][i];
-            const InterfaceNode<dim> &b = side[1][j];
-
-            ContactPair<dim> pair;
-            pair.interface = k;
-            pair.a.block   = a.block;
-            pair.a.nodes   = {{a.dofs, 1.}};
-            pair.a.point   = a.point;
-            pair.b.block   = b.block;
-            pair.b.nodes   = {{b.dofs, 1.}};
-            pair.b.point   = b.point;
-            if (d <= coincident)
-              {
-                pair.frame       = make_frame(a.normal);
-                pair.initial_gap = 0.;
-                ++n_coincident;
-              }
-            else
-              {
-                pair.frame       = make_frame<dim>(b.point - a.point);
-                pair.initial_gap = d;
-                ++n_gap;
-              }
-            pair.area  = 0.5 * (a.area + b.area);
-            pair.joint = declaration.joint;
-            total_area += pair.area;
-            pairs.push_back(pair);
-          }
-        for (unsigned int j = 0; j < side[1].size(); ++j)
-          if (!b_used[j])
-            unmatched.push_back(side[1][j].point);
-
-        AssertThrow(unmatched.empty() && ambiguous.empty(),
-                    ExcMessage(
-                      "Contact interface '" + declaration.description +
-                      "': " + std::to_string(unmatched.size()) +
-                      " node(s) have no partner within the search distance " +
-                      std::to_string(parameters.search_distance) +
-                      (unmatched.empty() ? "" : ":" + list_points(unmatched)) +
-                      "; " + std::to_string(ambiguous.size()) +
-                      " node(s) are not the nearest of their nearest node" +
-                      (ambiguous.empty() ? "" : ":" + list_points(ambiguous)) +
-                      ". Both sides need nodes facing each other one to one "
-                      "(matching meshes), and 'Contact/Search distance' at "
-                      "least the largest initial gap."));
-
-        pcout << "  interface " << k + 1 << " (" << declaration.description
-              << "): " << n_coincident + n_gap << " pairs (" << n_coincident
-              << " coincident, " << n_gap << " with a gap), area " << total_area
-              << ", mu = " << declaration.joint.friction_coefficient
-              << ", c = " << declaration.joint.cohesion
-              << ", sigma_t = " << declaration.joint.tensile_strength << "\n";
+        const unsigned int first = pairs.size();
+        pair_interface(blocks, parameters, k, coincident, pairs);
+        assign_joint_set(parameters, k, pairs, first);
       }
+    print_interfaces(parameters, pairs, pcout);
 
-    // A pair whose two nodes are both fixed in one global direction that
-    // is oblique to the pair's frame (an inclined fault meeting a roller
-    // boundary) has fewer free relative motions than contact conditions.
-    // It is tied (ContactPair::tied), and said so.
-    unsigned int n_tied     = 0;
-    const auto   fixed_side = [&](const PairSide<dim> &side,
-                                const unsigned int   c) {
-      const auto &constraints = blocks[side.block]->get_physical_constraints();
-      return std::all_of(
-        side.nodes.begin(), side.nodes.end(), [&](const auto &node) {
-          return constraints.is_constrained(node.dofs[c]) &&
-                 constraints.get_constraint_entries(node.dofs[c])->empty();
-        });
-    };
-    for (auto &pair : pairs)
-      {
-        bool oblique_support = false;
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            const bool fixed   = fixed_side(pair.a, c) && fixed_side(pair.b, c);
-            bool       aligned = false;
-            for (unsigned int i = 0; i < dim; ++i)
-              aligned |= std::abs(std::abs(pair.frame[i][c]) - 1.) < 1e-10;
-            oblique_support |= fixed && !aligned;
-          }
-        if (oblique_support)
-          {
-            ++n_tied;
-            pair.tied  = true;
-            pair.frame = unit_symmetric_tensor<dim>();
-          }
-      }
-    if (n_tied > 0)
-      pcout << "  " << n_tied
-            << " pair(s) tied: both nodes on a support fixing a direction "
-               "oblique to the interface; they stick in the free direction "
-               "and the support carries the rest\n";
+    const CrossPointReport report =
+      resolve_cross_points(pairs, parameters.interfaces);
+    if (report.n_merged > 0)
+      pcout << "  " << report.n_points
+            << " point(s) shared by three or more blocks: " << report.n_merged
+            << " pair(s) closing a loop merged into their neighbours\n";
+
+    tie_oblique_pairs(blocks, pairs, pcout);
     return pairs;
   }
 
@@ -504,10 +751,10 @@ namespace mbfem
   template struct ContactPair<3>;
   template std::vector<ContactPair<2>>
   find_contact_pairs(const std::vector<std::unique_ptr<Block<2>>> &,
-                     const ContactParameters &,
+                     ContactParameters &,
                      ConditionalOStream &);
   template std::vector<ContactPair<3>>
   find_contact_pairs(const std::vector<std::unique_ptr<Block<3>>> &,
-                     const ContactParameters &,
+                     ContactParameters &,
                      ConditionalOStream &);
 } // namespace mbfem

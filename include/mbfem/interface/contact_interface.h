@@ -3,6 +3,7 @@
 
 #include <mbfem/block/block.h>
 #include <mbfem/interface/joint_law.h>
+#include <mbfem/interface/joint_sets.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
@@ -29,6 +30,10 @@ namespace mbfem
     unsigned int side_b    = 0;
     JointLaw     joint;
     std::string  description;
+    /** Found by 'Interfaces = all', not declared one by one. */
+    bool found = false;
+    /** The joint set it belongs to (found interfaces), or empty. */
+    std::string joint_set;
   };
 
   /** Subsection "Contact": the interfaces and their Mohr-Coulomb data. */
@@ -40,9 +45,26 @@ namespace mbfem
     void
     parse_parameters(ParameterHandler &prm);
 
+    /**
+     * The declared interfaces; with 'all', find_contact_pairs() adds every
+     * pair of blocks that share faces in the mesh.
+     */
     std::vector<InterfaceDeclaration> interfaces;
-    double                            search_distance = 0.;
-    unsigned int                      max_iterations  = 100;
+    /** 'Interfaces = all' (possibly with declared 'boundaries' entries). */
+    bool all_shared_faces = false;
+    /** Law of the found interfaces that no joint set claims. */
+    JointLaw default_joint;
+    /** Joint sets of the found interfaces, by orientation. */
+    std::vector<JointSet> joint_sets;
+    double                search_distance = 0.;
+
+    /** Whether the input declares any contact interface. */
+    bool
+    declares_interfaces() const
+    {
+      return all_shared_faces || !interfaces.empty();
+    }
+    unsigned int max_iterations = 100;
     /** Which formulations run (see the entry's text). */
     enum class Formulation : unsigned char
     {
@@ -145,19 +167,22 @@ namespace mbfem
 
 
   /**
-   * Finds the contact pairs of every declared interface: coincident support
+   * Finds the contact pairs of every declared interface (with
+   * 'Interfaces = all' first adding to @p parameters every pair of blocks
+   * that share faces, with its joint set's law): coincident support
    * points (initial gap 0), or, where a gap separates the surfaces, mutually
    * nearest support points within the search distance. Each pair gets its
    * frame and the tributary area of its nodes, which is their lumped
    * (Gauss-Lobatto) boundary weight, the mean of the two sides. Nodes left
    * without a partner, or matched ambiguously, end the run with their count
    * and coordinates. Pairs on a support oblique to their interface are
-   * tied (ContactPair::tied).
+   * tied (ContactPair::tied). Where three or more blocks meet, the pairs
+   * are made free of loops by resolve_cross_points() (cross_points.h).
    */
   template <int dim>
   std::vector<ContactPair<dim>>
   find_contact_pairs(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
-                     const ContactParameters                        &parameters,
+                     ContactParameters                              &parameters,
                      ConditionalOStream                             &pcout);
 } // namespace mbfem
 
