@@ -4,7 +4,8 @@
 // about the origin so that the slope rises towards +x and the block would
 // slide towards -x. Structured quads; the interface has n elements, so its
 // nodes coincide on both sides (a conforming joint).
-// Material ids: 1 base, 2 block. Boundary id 1: the base's bottom.
+// Material ids: 1 base, 2 block. Boundary ids: 1 the base's bottom, 2 the
+// block's up-slope face (x' = L), for a lateral pressure.
 //
 // Regenerate (gmsh 4.8.4, Debian 12), e.g. the two blocks of issue 20:
 //   gmsh -2 -format msh22 incline_block.geo -o incline_24deg.msh
@@ -63,3 +64,4 @@ Rotate {{0, 0, 1}, {0, 0, 0}, theta * Pi / 180} { Surface{1, 2, 3, 4}; }
 Physical Surface(1) = {1, 2, 3};
 Physical Surface(2) = {4};
 Physical Curve(1) = {1, 2, 3};
+Physical Curve(2) = {13};
