@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Runs mbfem on a bad input and checks that it fails as a user should see:
-#   - a non-zero exit code,
+#   - a non-zero exit code, and the one of a '# expect-exit: N' line if
+#     the input has one (2: no equilibrium, certified by the statics
+#     certificate; 3: the iteration failed although admissible contact
+#     forces exist; 1: anything else),
 #   - every '# expect: REGEX' line of the input matched by stderr,
 #   - every '# expect-file: PATH' present afterwards (results of increments
 #     that converged stay on disk),
@@ -19,6 +22,11 @@ cat stdout stderr
 failed=0
 if [ $status -eq 0 ]; then
   echo "FAIL: mbfem exited with 0 on a bad input"
+  failed=1
+fi
+expected_status=$(sed -n 's/^# expect-exit: *//p' "$input" | head -n 1)
+if [ -n "$expected_status" ] && [ "$status" -ne "$expected_status" ]; then
+  echo "FAIL: mbfem exited with $status, expected $expected_status"
   failed=1
 fi
 n_expect=0
