@@ -56,8 +56,8 @@ main(int argc, char *argv[])
   }
   mbfem::Parameters<2> parameters;
   mbfem::read_parameters("certificate_admissible.prm", parameters);
-  ConditionalOStream              silent(std::cout, false);
-  mbfem::MultiBodyProblem<2>      problem(parameters, silent);
+  ConditionalOStream         silent(std::cout, false);
+  mbfem::MultiBodyProblem<2> problem(parameters, silent);
   problem.run();
 
   const auto result = problem.get_contact()->certify();
