@@ -12,8 +12,9 @@ build_dir=${MBFEM_BUILD_DIR:-$source_dir/build}
 
 # deal.II 9.4 with Trilinos, p4est, MPI, gmsh, UMFPACK; gmsh for meshes;
 # numdiff and perl for deal.II's test macros; clang-format for the style
-# check; the compiler and build tools.
-packages="libdeal.ii-dev libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format ccache python3-matplotlib"
+# check; COIN-OR Clp for the statics certificate's linear program;
+# matplotlib for the default example's figure; the compiler and build tools.
+packages="libdeal.ii-dev libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format ccache coinor-libclp-dev python3-matplotlib"
 
 missing=""
 for package in $packages; do

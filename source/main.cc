@@ -6,6 +6,7 @@
 
 #include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/analysis/order_study.h>
+#include <mbfem/base/exceptions.h>
 #include <mbfem/base/interruption.h>
 #include <mbfem/base/parameters.h>
 
@@ -141,7 +142,7 @@ main(int argc, char *argv[])
       std::cerr << "\nmbfem: error\n";
       exc.print_info(std::cerr);
       std::cerr << "Aborting." << std::endl;
-      return 1;
+      return mbfem::exit_code(exc); // 2, 3: see base/exceptions.h
     }
   catch (std::exception &exc)
     {

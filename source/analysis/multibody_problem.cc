@@ -76,6 +76,12 @@ namespace mbfem
                       std::to_string(in_situ.unit_weight) +
                       ": the in-situ stress would not be in equilibrium with "
                       "gravity. Make them equal."));
+        AssertThrow(!in_situ.enabled ||
+                      parameters.boundary_conditions.gravity_ramp_time == 0.,
+                    ExcMessage("'Boundary conditions/Gravity ramp time' must "
+                               "be 0 with an in-situ stress: sigma_0 is in "
+                               "equilibrium with the full weight from the "
+                               "start."));
       }
     check_point_supports(parameters.boundary_conditions,
                          blocks,
@@ -388,6 +394,48 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /**
+     * Ends the run after an increment failed for good (after any step
+     * halvings) with the verdict of the statics certificate for the loads
+     * of the last step tried: none exist (ExcNoEquilibrium, exit code 2),
+     * some exist although the iteration failed
+     * (ExcNotConvergedButAdmissible, 3), or, undecided or without
+     * interfaces, the failure as it was (ExcIncrementNotConverged, 1).
+     */
+    template <int dim>
+    [[noreturn]] void
+    end_with_certificate(const ContactSolver<dim> *contact,
+                         const std::string        &message,
+                         const double              time,
+                         const bool                no_equilibrium)
+    {
+      if (!contact)
+        {
+          if (no_equilibrium)
+            throw Exceptions::ExcNoEquilibrium(message);
+          throw Exceptions::ExcIncrementNotConverged(message);
+        }
+      const auto         result = contact->certify();
+      std::ostringstream text;
+      text << message << "    Statics certificate at t = " << time << ": "
+           << result.description << "\n";
+      using Verdict = typename StaticAdmissibility<dim>::Verdict;
+      if (result.verdict == Verdict::none)
+        throw Exceptions::ExcNoEquilibrium(text.str());
+      if (result.verdict == Verdict::admissible)
+        throw Exceptions::ExcNotConvergedButAdmissible(
+          text.str() +
+          "    The state iteration failed on a model that has a solution "
+          "with these joint strengths: a failure of the iteration, not of "
+          "the model.");
+      throw Exceptions::ExcIncrementNotConverged(text.str());
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   MultiBodyProblem<dim>::print_comparison_summary() const
@@ -441,7 +489,8 @@ namespace mbfem
     // the last are committed like increments. Only the failures a smaller
     // step can cure are retried (Exceptions::ExcIncrementNotConverged,
     // ExcNoEquilibrium); the message that ends the run is the first
-    // failure's, at the increment's own size, not the last retry's.
+    // failure's, at the increment's own size, not the last retry's, with
+    // the statics certificate's verdict (end_with_certificate()).
     const LoadHistory &history = parameters.load_history;
     const double       time    = history.time(k);
     const double       start   = (k == 0 ? 0. : history.time(k - 1));
@@ -452,18 +501,21 @@ namespace mbfem
       if (first_failure.empty())
         first_failure = message_of(failure);
       if (halvings == history.max_halvings)
-        {
-          if (history.max_halvings == 0)
-            throw;
-          using Failure = std::decay_t<decltype(failure)>;
-          throw Failure(first_failure +
-                        "    The increment was also tried in steps down to 1/" +
-                        std::to_string(1u << halvings) +
-                        " of its size ('Load history/Maximum step halvings = " +
-                        std::to_string(history.max_halvings) +
-                        "'). Results of the earlier increments are in " +
-                        parameters.output.directory + ".");
-        }
+        end_with_certificate<dim>(
+          contact.get(),
+          first_failure +
+            (history.max_halvings == 0 ?
+               "" :
+               "    The increment was also tried in steps down to 1/" +
+                 std::to_string(1u << halvings) +
+                 " of its size ('Load history/Maximum step halvings = " +
+                 std::to_string(history.max_halvings) + "').\n") +
+            (k > 1 ? "    Results of the earlier increments are in " +
+                       parameters.output.directory + ".\n" :
+                     ""),
+          target,
+          std::is_same_v<std::decay_t<decltype(failure)>,
+                         Exceptions::ExcNoEquilibrium>);
       for (const auto &block : blocks)
         block->restore_plastic_state();
       ++halvings;
@@ -504,7 +556,42 @@ namespace mbfem
     while (reached < time);
     if (n_steps > 1)
       pcout << "    increment " << k << " reached in " << n_steps << " steps\n";
+    certify_sliding_blocks(k, time);
     return plastic_iterations;
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::certify_sliding_blocks(const unsigned int k,
+                                                const double       time) const
+  {
+    // A floating block none of whose pairs sticks may have converged to a
+    // sliding state whose forces balance it only with tension or against
+    // the cone (the 3D wedge beyond its limit did, with |u| ~ 1e8 m):
+    // such an increment stands only if admissible forces exist.
+    if (!contact)
+      return;
+    const std::vector<std::string> sliding =
+      contact->blocks_without_stuck_pairs();
+    if (sliding.empty())
+      return;
+    const auto result = contact->certify();
+    if (result.verdict != StaticAdmissibility<dim>::Verdict::none)
+      return;
+    std::string names;
+    for (const auto &name : sliding)
+      names += (names.empty() ? "" : ", ") + name;
+    std::ostringstream text;
+    text << "Load increment " << k << ": no equilibrium. The contact "
+         << "iteration converged with every pair of " << names
+         << " slipping or open, but at t = " << time << " "
+         << result.description
+         << "\n    The converged state is no equilibrium the joints can "
+            "hold. Results of the earlier increments are in "
+         << parameters.output.directory << ".";
+    throw Exceptions::ExcNoEquilibrium(text.str());
   }
 
 

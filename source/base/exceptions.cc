@@ -4,6 +4,18 @@
 
 namespace mbfem
 {
+  int
+  exit_code(const ExceptionBase &e)
+  {
+    if (dynamic_cast<const Exceptions::ExcNoEquilibrium *>(&e))
+      return 2;
+    if (dynamic_cast<const Exceptions::ExcNotConvergedButAdmissible *>(&e))
+      return 3;
+    return 1;
+  }
+
+
+
   std::string
   message_of(const ExceptionBase &e)
   {

@@ -705,9 +705,11 @@ namespace mbfem
     std::vector<types::global_dof_index> dof_indices(n);
     Vector<double>                       value(dim);
 
-    // Gravity acts in -y (2D) or -z (3D).
+    // Gravity acts in -y (2D) or -z (3D), scaled by the load history if
+    // 'Gravity ramp time' says so.
     Tensor<1, dim> weight;
-    weight[dim - 1] = -material.unit_weight;
+    weight[dim - 1] =
+      -material.unit_weight * boundary_conditions.gravity_factor;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {

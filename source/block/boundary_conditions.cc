@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace mbfem
@@ -69,6 +70,19 @@ namespace mbfem
       prm.enter_subsection("Body force");
       Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
       prm.leave_subsection();
+
+      prm.declare_entry(
+        "Gravity ramp time",
+        "0",
+        Patterns::Double(0.),
+        "How the weight of 'Material/Unit weight' follows the load history. "
+        "0: in full at every increment, from the first. T > 0: scaled by "
+        "min(t / T, 1), like any load of the history, so that it grows over "
+        "the increments up to t = T (and smaller steps after a halving "
+        "carry a smaller part of it); e.g. T = 'Load history/End time' "
+        "ramps it over the whole run, T = 0.5 over the first half, before "
+        "other loads ramp. Must be 0 with an in-situ stress, which is in "
+        "equilibrium with the full weight.");
     }
     prm.leave_subsection();
   }
@@ -138,6 +152,8 @@ namespace mbfem
       body_force =
         parse_function<dim>(prm, dim, "Boundary conditions/Body force");
       prm.leave_subsection();
+
+      gravity_ramp_time = prm.get_double("Gravity ramp time");
     }
     prm.leave_subsection();
   }
@@ -170,6 +186,8 @@ namespace mbfem
     prescribed_displacement->set_time(time);
     traction->set_time(time);
     body_force->set_time(time);
+    gravity_factor =
+      (gravity_ramp_time > 0. ? std::min(time / gravity_ramp_time, 1.) : 1.);
   }
 
 

@@ -4,6 +4,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <map>
 #include <set>
 #include <sstream>
@@ -970,6 +971,143 @@ namespace mbfem
   ContactSolver<dim>::count(const ContactState state) const
   {
     return std::count(current.state.begin(), current.state.end(), state);
+  }
+
+
+
+  template <int dim>
+  typename StaticAdmissibility<dim>::Result
+  ContactSolver<dim>::certify() const
+  {
+    using Certificate = StaticAdmissibility<dim>;
+    std::vector<typename Certificate::Candidate> candidates(n_pairs);
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        candidates[k].joint  = contact_pairs[k].joint;
+        candidates[k].area   = contact_pairs[k].area;
+        candidates[k].broken = current.broken[k];
+        candidates[k].tied   = contact_pairs[k].tied;
+        if (k < held.size())
+          candidates[k].held = held[k];
+      }
+    std::vector<double> resultant = external_resultant;
+    resultant.resize(n_alpha_total, 0.);
+    const Certificate certificate(std::move(candidates), coupling, resultant);
+    typename Certificate::Result result = certificate.solve();
+
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(6);
+    const std::string lp = "a rigid-block linear program over the " +
+                           std::to_string(result.n_candidates) +
+                           " candidate pairs of the floating blocks" +
+                           (dim == 3 ? " (cones as polygons of 64 sides)" : "");
+    const std::string factor =
+      (result.strength_factor_bounded ?
+         (result.strength_factor > 1. ? "above 1000" : "below 0.001") :
+         std::to_string(result.strength_factor));
+    switch (result.verdict)
+      {
+        case Certificate::Verdict::admissible:
+          text << "statically admissible contact forces exist (" << lp
+               << "): the joints' strength could be divided by up to " << factor
+               << " (strength factor).";
+          break;
+        case Certificate::Verdict::undecided:
+          text << "the statics certificate cannot decide: forces exist in "
+                  "the circumscribed cones but not in the inscribed ones ("
+               << lp << "); strength factor at most " << factor << ".";
+          break;
+        case Certificate::Verdict::none:
+          text << "no statically admissible contact forces exist (" << lp
+               << "): no forces within the pairs' Mohr-Coulomb cones "
+                  "balance the floating blocks' loads; strength factor "
+               << factor
+               << ": admissible forces exist only with the joints' strength "
+                  "multiplied by "
+               << (result.strength_factor > 0. ?
+                     std::to_string(1. / result.strength_factor) :
+                     std::string("more than 1000"))
+               << ". Mechanism (a virtual velocity along which the loads "
+                  "do more work than the joints can dissipate):";
+          text << describe_mechanism(result.mechanism);
+          break;
+      }
+    result.description = text.str();
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactSolver<dim>::describe_mechanism(
+    const std::vector<double> &mechanism) const
+  {
+    // Each block's motion as a combination of its rigid-body modes
+    // (translations, then rotations in units of the block's diameter).
+    std::vector<Vector<double>> motion(n_alpha.size());
+    double                      largest = 0.;
+    for (unsigned int b = 0; b < n_alpha.size(); ++b)
+      {
+        if (n_alpha[b] == 0)
+          continue;
+        motion[b].reinit(mode_coefficients[b][0].size());
+        for (unsigned int a = 0; a < n_alpha[b]; ++a)
+          motion[b].add(mechanism[alpha_offset[b] + a],
+                        mode_coefficients[b][a]);
+        largest = std::max(largest, motion[b].linfty_norm());
+      }
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(4);
+    for (unsigned int b = 0; b < n_alpha.size(); ++b)
+      {
+        if (n_alpha[b] == 0 || motion[b].linfty_norm() <= 1e-6 * largest)
+          continue;
+        Tensor<1, dim> translation;
+        for (unsigned int d = 0; d < dim; ++d)
+          translation[d] = motion[b](d);
+        // Rotation per unit translation, or the rotation alone.
+        const double length = translation.norm();
+        text << "\n      " << block_names[b] << ": ";
+        if (length > 1e-6 * motion[b].linfty_norm())
+          text << "translation along (" << translation / length << "), "
+               << "rotation per unit translation ";
+        else
+          text << "no translation, rotation ";
+        text << (dim == 2 ? "about z " : "(");
+        for (unsigned int d = dim; d < motion[b].size(); ++d)
+          text << (d > dim ? " " : "")
+               << motion[b](d) / (length > 1e-6 * motion[b].linfty_norm() ?
+                                    length :
+                                    motion[b].linfty_norm());
+        text << (dim == 2 ? "" : ")")
+             << " (rotations in units of the block's diameter)";
+      }
+    return text.str();
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ContactSolver<dim>::blocks_without_stuck_pairs() const
+  {
+    std::vector<std::string> names;
+    for (unsigned int b = 0; b < n_alpha.size(); ++b)
+      {
+        if (n_alpha[b] == 0)
+          continue;
+        bool touched = false, stuck = false;
+        for (unsigned int k = 0; k < n_pairs; ++k)
+          if (contact_pairs[k].a.block == b || contact_pairs[k].b.block == b)
+            {
+              touched = true;
+              stuck   = stuck || current.state[k] == ContactState::stick;
+            }
+        if (touched && !stuck)
+          names.push_back(block_names[b]);
+      }
+    return names;
   }
 
 

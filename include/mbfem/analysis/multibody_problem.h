@@ -119,6 +119,14 @@ namespace mbfem
                     unsigned int      &reference_iterations,
                     PlasticUpdate     &plastic_update);
 
+    /**
+     * After increment @p k converged: if every pair of some floating
+     * block slips or is open, runs the statics certificate and, if no
+     * admissible forces exist, ends the run (ExcNoEquilibrium).
+     */
+    void
+    certify_sliding_blocks(const unsigned int k, const double time) const;
+
     /** Accepts a step short of the increment's end as converged. */
     void
     commit_step();

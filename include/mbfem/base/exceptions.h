@@ -25,13 +25,32 @@ namespace mbfem
 
     /**
      * The increment has no solution with the states tried: a floating
-     * block is not held, or the interface system is singular.
+     * block is not held, or the interface system is singular. Once the
+     * run ends with it (after any step halvings), the statics certificate
+     * has proved it: no contact forces within the joints' strength
+     * balance the floating blocks' loads (exit code 2).
      */
     DeclException1(ExcNoEquilibrium, std::string, << arg1);
+
+    /**
+     * An increment failed for good (after any step halvings), although the
+     * statics certificate found contact forces within the joints' strength
+     * that balance the floating blocks: the iteration, not the model, is
+     * at fault (exit code 3).
+     */
+    DeclException1(ExcNotConvergedButAdmissible, std::string, << arg1);
 
     /** A sparse or dense factorisation met a zero pivot. */
     DeclException1(ExcSingularMatrix, std::string, << arg1);
   } // namespace Exceptions
+
+  /**
+   * The exit code that tells how a run failed: 2 no equilibrium
+   * (certified), 3 the iteration failed although admissible contact
+   * forces exist, 1 anything else.
+   */
+  int
+  exit_code(const ExceptionBase &e);
 
   /** The text of a deal.II exception, without its leading blank lines. */
   std::string

@@ -63,6 +63,14 @@ namespace mbfem
     std::shared_ptr<Functions::ParsedFunction<dim>> prescribed_displacement;
     std::shared_ptr<Functions::ParsedFunction<dim>> traction;
     std::shared_ptr<Functions::ParsedFunction<dim>> body_force;
+
+    /**
+     * Pseudo-time over which the unit weight is ramped ('Gravity ramp
+     * time'); 0: the weight acts in full at every increment.
+     */
+    double gravity_ramp_time = 0.;
+    /** The part of the unit weight acting at the time of set_time(). */
+    double gravity_factor = 1.;
   };
 
   /**

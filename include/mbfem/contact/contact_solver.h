@@ -3,6 +3,7 @@
 
 #include <mbfem/block/block.h>
 #include <mbfem/contact/monolithic_system.h>
+#include <mbfem/contact/static_admissibility.h>
 #include <mbfem/interface/contact_interface.h>
 #include <mbfem/interface/pair_equation.h>
 
@@ -160,6 +161,25 @@ namespace mbfem
     unsigned int
     count(const ContactState state) const;
 
+    /**
+     * The statics certificate for the loads of the current increment (as
+     * the last solve_increment() set them up): do contact forces within
+     * every candidate pair's Mohr-Coulomb cone balance all floating blocks
+     * together? The pairs' broken flags are those of the last trial. The
+     * result's description names the verdict, the strength factor and,
+     * if none exist, each moving block's translation and rotation.
+     */
+    typename StaticAdmissibility<dim>::Result
+    certify() const;
+
+    /**
+     * Names of the floating blocks none of whose pairs stuck in the
+     * increment just solved (all slip or open): such an increment may have
+     * converged to a sliding state no forces can hold, and is certified.
+     */
+    std::vector<std::string>
+    blocks_without_stuck_pairs() const;
+
   private:
     struct Trial
     {
@@ -220,6 +240,13 @@ namespace mbfem
 
     std::string
     signature(const Trial &trial) const;
+
+    /**
+     * The certificate's mechanism (per floating mode) as each moving
+     * block's translation and rotation.
+     */
+    std::string
+    describe_mechanism(const std::vector<double> &mechanism) const;
 
     const std::vector<ContactPair<dim>>    contact_pairs;
     const unsigned int                     max_iterations;

@@ -1,0 +1,391 @@
+#include <mbfem/contact/static_admissibility.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <ClpSimplex.hpp>
+#include <CoinPackedMatrix.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace mbfem
+{
+  namespace
+  {
+    /**
+     * Bounds of the strength-factor search: beyond them the answer is "at
+     * least 1000" or "none even with 1000 times the strength", which is
+     * all a user needs to read.
+     */
+    constexpr double largest_factor  = 1e3;
+    constexpr double smallest_factor = 1e-3;
+    /** Relative width at which the bisection on the factor stops. */
+    constexpr double factor_tolerance = 1e-7;
+
+    /** An LP in triplet form, as Clp loads it. */
+    struct LinearProgram
+    {
+      std::vector<int>    rows, columns;
+      std::vector<double> values;
+      std::vector<double> column_lower, column_upper, objective;
+      std::vector<double> row_lower, row_upper;
+
+      unsigned int
+      add_column(const double lower, const double upper, const double cost)
+      {
+        column_lower.push_back(lower);
+        column_upper.push_back(upper);
+        objective.push_back(cost);
+        return column_lower.size() - 1;
+      }
+
+      unsigned int
+      add_row(const double lower, const double upper)
+      {
+        row_lower.push_back(lower);
+        row_upper.push_back(upper);
+        return row_lower.size() - 1;
+      }
+
+      void
+      add(const unsigned int row, const unsigned int column, const double a)
+      {
+        if (a == 0.)
+          return;
+        rows.push_back(row);
+        columns.push_back(column);
+        values.push_back(a);
+      }
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  StaticAdmissibility<dim>::StaticAdmissibility(
+    std::vector<Candidate>     candidates_,
+    const FullMatrix<double>  &coupling_,
+    const std::vector<double> &external_resultant_,
+    const unsigned int         n_facets_)
+    : candidates(std::move(candidates_))
+    , coupling(coupling_)
+    , external_resultant(external_resultant_)
+    , n_facets(std::max(n_facets_, 4u))
+  {
+    AssertDimension(coupling.m(), candidates.size() * dim);
+    AssertDimension(coupling.n(), external_resultant.size());
+    force_scale = 0.;
+    for (const double f : external_resultant)
+      force_scale = std::max(force_scale, std::abs(f));
+    if (!(force_scale > 0.))
+      force_scale = 1.;
+    for (unsigned int k = 0; k < candidates.size(); ++k)
+      {
+        bool touches = false;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int a = 0; a < coupling.n(); ++a)
+            touches = touches || coupling(k * dim + i, a) != 0.;
+        if (touches)
+          active.push_back(k);
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  StaticAdmissibility<dim>::infeasibility(const double         factor,
+                                          const bool           circumscribed,
+                                          std::vector<double> *mechanism,
+                                          std::vector<double> *forces) const
+  {
+    const unsigned int n_modes = coupling.n();
+    const double       inf     = COIN_DBL_MAX;
+    LinearProgram      lp;
+
+    // Equilibrium rows first (row a = mode a), then the cones.
+    double load_norm = 0.;
+    for (unsigned int a = 0; a < n_modes; ++a)
+      {
+        const double b = -external_resultant[a] / force_scale;
+        lp.add_row(b, b);
+        load_norm += std::abs(b);
+        // Slacks s+ and s-: the phase-1 objective.
+        lp.add(a, lp.add_column(0., inf, 1.), 1.);
+        lp.add(a, lp.add_column(0., inf, 1.), -1.);
+      }
+
+    // A polygon of n_facets sides around the circle of radius s: its
+    // facets t . e_j <= kappa s touch the circle (kappa = 1) or pass
+    // through its vertices on it (kappa = cos(pi / n)).
+    const double kappa =
+      (dim == 2 || circumscribed) ? 1. : std::cos(numbers::PI / n_facets);
+    std::vector<unsigned int> first_column(active.size());
+    for (unsigned int i = 0; i < active.size(); ++i)
+      {
+        const Candidate &pair = candidates[active[i]];
+        const double     area = pair.area / force_scale;
+        const double     mu   = pair.joint.friction_coefficient / factor;
+        const double     cohesion =
+          (pair.broken ? 0. : pair.joint.cohesion / factor) * area;
+        const double tension =
+          (pair.broken ? 0. : pair.joint.tensile_strength / factor) * area;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const bool         free  = pair.tied && !pair.held[d];
+            const double       lower = pair.held[d]      ? 0. :
+                                       (d == 0 && !free) ? -tension :
+                                                           -inf;
+            const double       upper = pair.held[d] ? 0. : inf;
+            const unsigned int c     = lp.add_column(lower, upper, 0.);
+            if (d == 0)
+              first_column[i] = c;
+            for (unsigned int a = 0; a < n_modes; ++a)
+              lp.add(a, c, coupling(active[i] * dim + d, a));
+          }
+        if (pair.tied)
+          continue;
+        // |r_t| <= c A + mu r_n (+ mu sigma_t A, circumscribed).
+        const double strength = cohesion + (circumscribed ? mu * tension : 0.);
+        const unsigned int n_sides = (dim == 2 ? 2 : n_facets);
+        for (unsigned int j = 0; j < n_sides; ++j)
+          {
+            const unsigned int row = lp.add_row(-inf, kappa * strength);
+            lp.add(row, first_column[i], -kappa * mu);
+            if (dim == 2)
+              lp.add(row, first_column[i] + 1, j == 0 ? 1. : -1.);
+            else
+              {
+                const double angle = 2. * numbers::PI * j / n_sides;
+                lp.add(row, first_column[i] + 1, std::cos(angle));
+                lp.add(row, first_column[i] + dim - 1, std::sin(angle));
+              }
+          }
+      }
+
+    const CoinPackedMatrix matrix(true,
+                                  lp.rows.data(),
+                                  lp.columns.data(),
+                                  lp.values.data(),
+                                  lp.values.size());
+    ClpSimplex             model;
+    model.setLogLevel(0);
+    model.loadProblem(matrix,
+                      lp.column_lower.data(),
+                      lp.column_upper.data(),
+                      lp.objective.data(),
+                      lp.row_lower.data(),
+                      lp.row_upper.data());
+    model.dual();
+    // The slacks make every phase-1 LP feasible and bounded below by 0:
+    // anything but optimal is the solver's failure, not the model's.
+    AssertThrow(model.isProvenOptimal(),
+                ExcMessage("The statics certificate's linear program (Clp) "
+                           "ended with status " +
+                           std::to_string(model.status()) + "."));
+    const double optimum =
+      std::max(0., model.objectiveValue()) / std::max(load_norm, 1e-300);
+
+    if (mechanism)
+      {
+        // The duals y of the equilibrium rows: -y is a virtual velocity of
+        // the modes whose power, loads minus joints, is the optimum.
+        const double *dual = model.dualRowSolution();
+        mechanism->assign(n_modes, 0.);
+        double largest = 0., work = 0.;
+        for (unsigned int a = 0; a < n_modes; ++a)
+          {
+            (*mechanism)[a] = -dual[a];
+            largest         = std::max(largest, std::abs(dual[a]));
+            work += external_resultant[a] * (*mechanism)[a];
+          }
+        for (double &v : *mechanism)
+          v *= (work < 0. ? -1. : 1.) / (largest > 0. ? largest : 1.);
+      }
+    if (forces)
+      {
+        const double *x = model.primalColumnSolution();
+        forces->assign(candidates.size() * dim, 0.);
+        for (unsigned int i = 0; i < active.size(); ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            (*forces)[active[i] * dim + d] =
+              x[first_column[i] + d] * force_scale;
+      }
+    return optimum;
+  }
+
+
+
+  template <int dim>
+  double
+  StaticAdmissibility<dim>::search_strength_factor(bool         &bounded,
+                                                   unsigned int &n_solves) const
+  {
+    const auto admissible = [&](const double factor) {
+      ++n_solves;
+      return infeasibility(factor, true) <= feasibility_tolerance;
+    };
+    // Bracket [lo, hi] with lo admissible and hi not, then bisect.
+    double lo = 1., hi = 1.;
+    bounded = false;
+    if (admissible(1.))
+      {
+        for (hi = 2.; admissible(hi); hi *= 2.)
+          {
+            lo = hi;
+            if (hi >= largest_factor)
+              {
+                bounded = true;
+                return hi;
+              }
+          }
+      }
+    else
+      {
+        for (lo = 0.5; !admissible(lo); lo /= 2.)
+          {
+            hi = lo;
+            if (lo <= smallest_factor)
+              {
+                bounded = true;
+                return 0.;
+              }
+          }
+      }
+    while (hi - lo > factor_tolerance * hi)
+      {
+        const double middle            = 0.5 * (lo + hi);
+        (admissible(middle) ? lo : hi) = middle;
+      }
+    return lo;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  StaticAdmissibility<dim>::sliding_mechanism(
+    const std::vector<double> &associated) const
+  {
+    // The relative velocity of every pair, w = P_hat v, in its frame.
+    const unsigned int  n_modes = coupling.n();
+    std::vector<double> w(candidates.size() * dim, 0.);
+    double              largest = 0.;
+    for (const unsigned int k : active)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          for (unsigned int a = 0; a < n_modes; ++a)
+            w[k * dim + d] += coupling(k * dim + d, a) * associated[a];
+          largest = std::max(largest, std::abs(w[k * dim + d]));
+        }
+    // Rows that must vanish: every direction of a pair at rest, the
+    // normal of a pair that slides (its velocity on the dual cone,
+    // w_n = mu |w_t|). Pairs that open (w_n > mu |w_t|) stay free.
+    LAPACKFullMatrix<double> normal(n_modes, n_modes);
+    const double             tolerance = 1e-6 * largest;
+    for (const unsigned int k : active)
+      {
+        double tangential = 0.;
+        for (unsigned int d = 1; d < dim; ++d)
+          tangential += w[k * dim + d] * w[k * dim + d];
+        tangential        = std::sqrt(tangential);
+        const double mu   = candidates[k].joint.friction_coefficient;
+        const bool   rest = std::abs(w[k * dim]) + tangential <= tolerance;
+        // (In 3D the polygon's dual cone reaches up to 1 / cos(pi / n)
+        // beyond the circle's, between two facets.)
+        const double polygon =
+          (dim == 2 ? 1. : 1. / std::cos(numbers::PI / n_facets));
+        const bool slide =
+          w[k * dim] <= mu * tangential * polygon * (1. + 1e-6) + tolerance;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (rest || (slide && d == 0))
+            for (unsigned int a = 0; a < n_modes; ++a)
+              for (unsigned int b = 0; b < n_modes; ++b)
+                normal(a, b) +=
+                  coupling(k * dim + d, a) * coupling(k * dim + d, b);
+      }
+    // v minus its part in the row space of those rows.
+    double scale = 0.;
+    for (unsigned int a = 0; a < n_modes; ++a)
+      scale = std::max(scale, normal(a, a));
+    if (scale == 0.)
+      return associated;
+    Vector<double>     eigenvalues;
+    FullMatrix<double> eigenvectors;
+    normal.compute_eigenvalues_symmetric(1e-10 * scale,
+                                         2. * n_modes * scale,
+                                         1e-14 * scale,
+                                         eigenvalues,
+                                         eigenvectors);
+    std::vector<double> sliding = associated;
+    for (unsigned int i = 0; i < eigenvalues.size(); ++i)
+      {
+        double projection = 0.;
+        for (unsigned int a = 0; a < n_modes; ++a)
+          projection += eigenvectors(a, i) * associated[a];
+        for (unsigned int a = 0; a < n_modes; ++a)
+          sliding[a] -= projection * eigenvectors(a, i);
+      }
+    double size = 0., work = 0.;
+    for (unsigned int a = 0; a < n_modes; ++a)
+      {
+        size = std::max(size, std::abs(sliding[a]));
+        work += external_resultant[a] * sliding[a];
+      }
+    // Nothing left (a mechanism that only opens joints), or one the loads
+    // do no work along: the associated one is the better description.
+    if (size <= 1e-6 || work <= 0.)
+      return associated;
+    for (double &v : sliding)
+      v /= size;
+    return sliding;
+  }
+
+
+
+  template <int dim>
+  typename StaticAdmissibility<dim>::Result
+  StaticAdmissibility<dim>::solve() const
+  {
+    const auto start = std::chrono::steady_clock::now();
+    Result     result;
+    result.n_candidates = active.size();
+    if (coupling.n() == 0)
+      {
+        result.strength_factor         = largest_factor;
+        result.strength_factor_bounded = true;
+        return result;
+      }
+
+    std::vector<double> mechanism;
+    result.infeasibility = infeasibility(1., true, &mechanism);
+    result.n_solves      = 1;
+    if (result.infeasibility > feasibility_tolerance)
+      {
+        result.verdict              = Verdict::none;
+        result.associated_mechanism = mechanism;
+        result.mechanism            = sliding_mechanism(mechanism);
+      }
+    else
+      {
+        ++result.n_solves;
+        const double inner = infeasibility(1., false, nullptr, &result.forces);
+        result.verdict = (inner <= feasibility_tolerance ? Verdict::admissible :
+                                                           Verdict::undecided);
+      }
+    result.strength_factor =
+      search_strength_factor(result.strength_factor_bounded, result.n_solves);
+    result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+    return result;
+  }
+
+
+
+  template class StaticAdmissibility<2>;
+  template class StaticAdmissibility<3>;
+} // namespace mbfem
