@@ -706,8 +706,20 @@ namespace mbfem
       AssertThrow(false, Exceptions::ExcNoEquilibrium(fast.failure));
     AssertThrow(!monolithic,
                 Exceptions::ExcIncrementNotConverged(fast.failure));
-    method        = StateMethod::load_path;
-    path_switches = load_path(increment);
+    method = StateMethod::load_path;
+    try
+      {
+        path_switches = load_path(increment);
+      }
+    catch (const Exceptions::ExcIncrementNotConverged &)
+      {
+        // The path did not conclude (in 3D it can pivot in a cycle at one
+        // load): where the fast iteration had met a singular trial, its
+        // verdict stands, as before the path existed.
+        AssertThrow(!fast.no_equilibrium,
+                    Exceptions::ExcNoEquilibrium(fast.failure));
+        throw;
+      }
     return fast_iterations + path_switches;
   }
 
