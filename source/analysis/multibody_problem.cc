@@ -986,9 +986,12 @@ namespace mbfem
                       " formulation" +
                       (reference ? " with the monolithic reference" : "") +
                       "; slip = tangential relative displacement; seconds = "
-                      "wall time of the increment's contact iterations\n";
+                      "wall time of the increment's contact iterations; "
+                      "method = which state iteration concluded the "
+                      "increment (fast or load path)\n";
         summary_csv += "increment,t,iterations,stick,slip,open,max_gap,"
-                       "max_slip,max_normal_traction,seconds";
+                       "max_slip,max_normal_traction,seconds,method,"
+                       "fast_iterations,path_switches";
         if (reference)
           summary_csv += ",reference_iterations,reference_seconds,"
                          "states_differ,force_difference,gap_difference,"
@@ -1017,6 +1020,11 @@ namespace mbfem
                   max_p,
                   last_contact_seconds);
     summary_csv += buffer;
+    // Which method concluded the state iteration, and its share of the
+    // iterations (doc/state_iteration.md).
+    summary_csv += "," + to_string(contact->last_method()) + "," +
+                   std::to_string(contact->last_iterations().first) + "," +
+                   std::to_string(contact->last_iterations().second);
     if (reference)
       {
         std::snprintf(buffer,
@@ -1069,9 +1077,16 @@ namespace mbfem
             max_tangential = std::max(max_tangential, tangential.norm() / area);
             max_gap        = std::max(max_gap, contact->gap(i));
           }
-        pcout << iterations << " iteration(s), stick/slip/open "
-              << contact->count(ContactState::stick) << "/"
-              << contact->count(ContactState::slip) << "/"
+        // Which method concluded the state iteration: named only where
+        // the fast iteration did not (the screen lines of the increments
+        // it concludes stay as they were).
+        pcout << iterations << " iteration(s)";
+        if (contact->last_method() != StateMethod::fast)
+          pcout << " (fast " << contact->last_iterations().first << ", "
+                << to_string(contact->last_method()) << " "
+                << contact->last_iterations().second << ")";
+        pcout << ", stick/slip/open " << contact->count(ContactState::stick)
+              << "/" << contact->count(ContactState::slip) << "/"
               << contact->count(ContactState::open) << ", p in ["
               << std::scientific << std::setprecision(6) << min_normal << ", "
               << max_normal << "], max |q| = " << max_tangential

@@ -36,6 +36,14 @@ namespace mbfem
 
 
 
+  std::string
+  to_string(const StateMethod method)
+  {
+    return method == StateMethod::fast ? "fast" : "load path";
+  }
+
+
+
   template <int dim>
   ContactSolver<dim>::ContactSolver(std::vector<ContactPair<dim>> pairs,
                                     const unsigned int       max_iterations,
@@ -680,6 +688,48 @@ namespace mbfem
           external_resultant[alpha_offset[b] + a] = resultant[a];
       }
 
+    // The fast iteration first: it concludes nearly every increment, in a
+    // few solves. Its answer is refused where the states leave a
+    // mechanism (every pair that could resist a rigid motion slips): such
+    // an equilibrium exists only exactly at a limit, and in 3D the
+    // linearised slip direction can make the system regular with an
+    // unbounded slip instead.
+    method        = StateMethod::fast;
+    path_switches = 0;
+    const auto fast =
+      fast_iteration(from_last_solve ? current : committed, increment);
+    fast_iterations = fast.iterations;
+    if (fast.converged && (monolithic || mechanism(current).empty()))
+      return fast_iterations;
+    // The load path needs C_hat and P_hat, which only the condensed
+    // formulation has.
+    if (monolithic && fast.no_equilibrium)
+      AssertThrow(false, Exceptions::ExcNoEquilibrium(fast.failure));
+    AssertThrow(!monolithic,
+                Exceptions::ExcIncrementNotConverged(fast.failure));
+    method = StateMethod::load_path;
+    try
+      {
+        path_switches = load_path(increment);
+      }
+    catch (const Exceptions::ExcIncrementNotConverged &)
+      {
+        // The path did not conclude (in 3D it can pivot in a cycle at one
+        // load): where the fast iteration had met a singular trial, its
+        // verdict stands, as before the path existed.
+        AssertThrow(!fast.no_equilibrium,
+                    Exceptions::ExcNoEquilibrium(fast.failure));
+        throw;
+      }
+    return fast_iterations + path_switches;
+  }
+
+
+
+  template <int dim>
+  typename ContactSolver<dim>::FastOutcome
+  ContactSolver<dim>::fast_iteration(Trial trial, const unsigned int increment)
+  {
     const auto single_change = [&](const Trial               &from,
                                    const Trial               &to,
                                    const std::vector<double> &violation) {
@@ -694,8 +744,9 @@ namespace mbfem
       result.direction_stiffness = to.direction_stiffness;
       return result;
     };
+    const std::string head = "Load increment " + std::to_string(increment);
 
-    Trial                 trial  = (from_last_solve ? current : committed);
+    FastOutcome           outcome;
     bool                  damped = false;
     std::set<std::string> seen{signature(trial)};
     Trial                 last_good, last_good_next;
@@ -704,6 +755,7 @@ namespace mbfem
 
     for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
       {
+        outcome.iterations = iteration;
         Vector<double> solution, displacement;
         if (!solve_trial(trial, solution, displacement))
           {
@@ -718,10 +770,10 @@ namespace mbfem
                 seen.insert(signature(trial));
                 continue;
               }
-            AssertThrow(false,
-                        Exceptions::ExcNoEquilibrium(
-                          "Load increment " + std::to_string(increment) +
-                          ": no equilibrium." + diagnose_singular(trial)));
+            outcome.no_equilibrium = true;
+            outcome.failure =
+              head + ": no equilibrium." + diagnose_singular(trial);
+            return outcome;
           }
 
         std::vector<double> violation;
@@ -731,14 +783,10 @@ namespace mbfem
 
         if (signature(next) == signature(trial) && direction_change < 1e-6)
           {
-            current          = trial;
-            current_solution = solution;
-            current_displacement.assign(n_pairs, Tensor<1, dim>());
-            for (unsigned int k = 0; k < n_pairs; ++k)
-              for (unsigned int i = 0; i < dim; ++i)
-                current_displacement[k][i] = displacement(k * dim + i);
-            current.slip_direction = next.slip_direction;
-            return iteration;
+            trial.slip_direction = next.slip_direction;
+            accept(trial, solution, displacement);
+            outcome.converged = true;
+            return outcome;
           }
         have_good           = true;
         last_good           = trial;
@@ -769,27 +817,141 @@ namespace mbfem
                             << to_string(next.state[k]);
                       ++n_listed;
                     }
-                AssertThrow(false,
-                            Exceptions::ExcIncrementNotConverged(
-                              "Load increment " + std::to_string(increment) +
-                              ": the contact states cycle after " +
-                              std::to_string(iteration) +
-                              " iterations, even switching one pair at a "
-                              "time. Pairs that keep switching:" +
-                              pairs.str() + "\n    Use more load increments."));
+                outcome.failure =
+                  head + ": the contact states cycle after " +
+                  std::to_string(iteration) +
+                  " iterations, even switching one pair at a time. Pairs "
+                  "that keep switching:" +
+                  pairs.str() + "\n    Use more load increments.";
+                return outcome;
               }
           }
         seen.insert(signature(next));
         trial = next;
       }
-    AssertThrow(false,
-                Exceptions::ExcIncrementNotConverged(
-                  "Load increment " + std::to_string(increment) +
-                  ": the contact states did not settle in " +
-                  std::to_string(max_iterations) +
-                  " iterations ('Contact/Maximum iterations'). "
-                  "Use more load increments."));
-    return max_iterations;
+    outcome.failure = head + ": the contact states did not settle in " +
+                      std::to_string(max_iterations) +
+                      " iterations ('Contact/Maximum iterations'). Use more "
+                      "load increments.";
+    return outcome;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::accept(const Trial          &trial,
+                             const Vector<double> &solution,
+                             const Vector<double> &displacement)
+  {
+    current          = trial;
+    current_solution = solution;
+    current_displacement.assign(n_pairs, Tensor<1, dim>());
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      for (unsigned int i = 0; i < dim; ++i)
+        current_displacement[k][i] = displacement(k * dim + i);
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  ContactSolver<dim>::mechanism_motion(const Trial &trial) const
+  {
+    if (n_alpha_total == 0)
+      return Vector<double>();
+    // The rows that fix a rigid motion: normal at a closed pair,
+    // tangential at a stuck one.
+    std::vector<unsigned int> rows;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        const bool stuck =
+          trial.state[k] == ContactState::stick || contact_pairs[k].tied;
+        if (trial.state[k] == ContactState::open && !contact_pairs[k].tied)
+          continue;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!held[k][d] && (d == 0 || stuck))
+            rows.push_back(k * dim + d);
+      }
+    const unsigned int       q = n_alpha_total;
+    LAPACKFullMatrix<double> gram(q, q);
+    for (const unsigned int row : rows)
+      for (unsigned int a = 0; a < q; ++a)
+        for (unsigned int c = 0; c < q; ++c)
+          gram(a, c) += coupling(row, a) * coupling(row, c);
+    double largest = 0.;
+    for (unsigned int a = 0; a < q; ++a)
+      largest = std::max(largest, gram(a, a));
+    Vector<double>     eigenvalues;
+    FullMatrix<double> null_space;
+    gram.compute_eigenvalues_symmetric(
+      -1., 1e-10 * std::max(largest, 1e-300), 1e-14, eigenvalues, null_space);
+    if (eigenvalues.size() == 0)
+      return Vector<double>();
+
+    // Of the free motions, the one the loads drive (their work on the
+    // modes, projected on the free space); a free motion they do no work
+    // on is named as it is.
+    Vector<double> motion(q);
+    for (unsigned int v = 0; v < eigenvalues.size(); ++v)
+      {
+        double work = 0.;
+        for (unsigned int a = 0; a < q; ++a)
+          work += external_resultant[a] * null_space(a, v);
+        for (unsigned int a = 0; a < q; ++a)
+          motion(a) += work * null_space(a, v);
+      }
+    if (motion.l2_norm() < 1e-8 * std::max(1e-300, [&] {
+                             double f = 0.;
+                             for (const double x : external_resultant)
+                               f += x * x;
+                             return std::sqrt(f);
+                           }()))
+      for (unsigned int a = 0; a < q; ++a)
+        motion(a) = null_space(a, 0);
+    return motion;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactSolver<dim>::mechanism(const Trial &trial) const
+  {
+    const Vector<double> motion = mechanism_motion(trial);
+    if (motion.size() == 0)
+      return "";
+    std::ostringstream message;
+    for (unsigned int b = 0; b < n_alpha.size(); ++b)
+      {
+        Vector<double> combination(
+          n_alpha[b] > 0 ? mode_coefficients[b][0].size() : 0);
+        for (unsigned int a = 0; a < n_alpha[b]; ++a)
+          combination.add(motion(alpha_offset[b] + a), mode_coefficients[b][a]);
+        if (n_alpha[b] == 0 ||
+            combination.linfty_norm() < 1e-6 * motion.linfty_norm())
+          continue;
+        combination /= combination.linfty_norm();
+        unsigned int counts[3] = {0, 0, 0};
+        for (unsigned int k = 0; k < n_pairs; ++k)
+          {
+            bool touches = false;
+            for (unsigned int a = 0; a < n_alpha[b]; ++a)
+              for (unsigned int d = 0; d < dim; ++d)
+                if (coupling(k * dim + d, alpha_offset[b] + a) != 0.)
+                  touches = true;
+            if (touches)
+              ++counts[static_cast<int>(trial.state[k])];
+          }
+        message << "\n    " << block_names[b]
+                << " cannot be in equilibrium: its contact pairs (" << counts[0]
+                << " stick, " << counts[1] << " slip, " << counts[2]
+                << " open) cannot hold its rigid-body motion ["
+                << Block<dim>::describe_rigid_body_mode(combination)
+                << "]: the loads exceed what friction and cohesion can carry, "
+                   "or the block has lost contact.";
+      }
+    return message.str();
   }
 
 
@@ -812,6 +974,7 @@ namespace mbfem
           }
     committed              = current;
     committed_displacement = current_displacement;
+    committed_solution     = current_solution;
   }
 
 
@@ -1039,6 +1202,15 @@ namespace mbfem
 
 
   template <int dim>
+  StateMethod
+  ContactSolver<dim>::last_method() const
+  {
+    return method;
+  }
+
+
+
+  template <int dim>
   std::string
   ContactSolver<dim>::describe_mechanism(
     const std::vector<double> &mechanism) const
@@ -1108,6 +1280,15 @@ namespace mbfem
           names.push_back(block_names[b]);
       }
     return names;
+  }
+
+
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  ContactSolver<dim>::last_iterations() const
+  {
+    return {fast_iterations, path_switches};
   }
 
 

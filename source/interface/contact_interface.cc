@@ -79,8 +79,12 @@ namespace mbfem
         "Maximum iterations",
         "100",
         Patterns::Integer(1),
-        "Most contact-state iterations (assume states, solve, check, switch) "
-        "in one load increment before the run stops with a message.");
+        "Most iterations of the fast contact-state iteration (assume "
+        "states, solve, check, switch) in one load increment. Where it does "
+        "not settle in as many (or cycles, or meets a singular trial), the "
+        "load path concludes the increment (condensed formulation; "
+        "doc/state_iteration.md); with the monolithic formulation the run "
+        "stops with a message.");
       prm.declare_entry(
         "Formulation",
         "condensed",

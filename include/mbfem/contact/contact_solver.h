@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mbfem
@@ -42,6 +43,26 @@ namespace mbfem
 
   std::string
   to_string(const ContactFormulation formulation);
+
+  /**
+   * Which method concluded an increment's state iteration (see
+   * doc/state_iteration.md): the fixed-point active-set iteration (assume
+   * states, solve, check, switch), or, where it cycles, runs out of
+   * iterations, or meets a trial that leaves a block unsupported, the load
+   * path: the increment's load applied from the last converged state in a
+   * continuous parameter s in [0, 1], switching the state of one pair
+   * exactly where its condition fails, which ends at s = 1 with the
+   * solution or at a mechanism with the fraction of the increment it
+   * reached.
+   */
+  enum class StateMethod : unsigned char
+  {
+    fast,
+    load_path
+  };
+
+  std::string
+  to_string(const StateMethod method);
 
   /**
    * The interface system of the multi-body method (paper eqs. 7-10, 15 and
@@ -180,6 +201,18 @@ namespace mbfem
     std::vector<std::string>
     blocks_without_stuck_pairs() const;
 
+    /** Which method concluded the last solve_increment(). */
+    StateMethod
+    last_method() const;
+
+    /**
+     * The state iterations of the last solve_increment(): those of the fast
+     * iteration, and the switches of the load path (0 if the fast
+     * iteration concluded); solve_increment() returns their sum.
+     */
+    std::pair<unsigned int, unsigned int>
+    last_iterations() const;
+
   private:
     struct Trial
     {
@@ -248,6 +281,99 @@ namespace mbfem
     std::string
     describe_mechanism(const std::vector<double> &mechanism) const;
 
+    /** How the fast iteration ended: converged, or why not. */
+    struct FastOutcome
+    {
+      bool         converged      = false;
+      bool         no_equilibrium = false; // a singular trial, not a cycle
+      unsigned int iterations     = 0;
+      std::string  failure;
+    };
+
+    /**
+     * The fixed-point active-set iteration from @p trial: assume states,
+     * solve, check, switch; one switch at a time once it cycles or a
+     * trial is singular. Converged, it stores the solution as current.
+     */
+    FastOutcome
+    fast_iteration(Trial trial, const unsigned int increment);
+
+    /** Stores a consistent trial and its solution as current. */
+    void
+    accept(const Trial          &trial,
+           const Vector<double> &solution,
+           const Vector<double> &displacement);
+
+    /**
+     * The rigid motions of the floating blocks that the states of @p trial
+     * leave free: no normal motion at a closed pair, no tangential motion
+     * at a stuck one (a slipping pair resists only by its strength). Of
+     * these the one the loads drive: the free space's projection of the
+     * loads' work on the modes. Empty if the states hold every block;
+     * otherwise a message naming each moving block and its motion.
+     */
+    std::string
+    mechanism(const Trial &trial) const;
+
+    /** The motion of mechanism() as floating amplitudes; empty if none. */
+    Vector<double>
+    mechanism_motion(const Trial &trial) const;
+
+    /**
+     * At a mechanism of the load path: the slipping pairs whose slip the
+     * mechanism's motion would reverse stick instead (they are not at
+     * their limit along it). Returns how many switched; 0 means the
+     * mechanism is the limit.
+     */
+    unsigned int
+    unload_against(Trial &trial, const Vector<double> &motion) const;
+
+    /**
+     * The load path (source/contact/load_path.cc): the increment's load
+     * scaled by s from the last converged state (s = 0) to the full
+     * increment (s = 1). With the states fixed the solution is affine in
+     * s; the path moves to the first s where a pair's condition fails,
+     * switches that pair (every transition of the joint law, open -> slip
+     * included), and goes on. Returns the number of switches; throws
+     * ExcNoEquilibrium at a mechanism, ExcIncrementNotConverged if it stops
+     * otherwise.
+     */
+    unsigned int
+    load_path(const unsigned int increment);
+
+    /**
+     * Sets the data of the increment to the load fraction @p s: s = 1 is
+     * the increment's load, s = 0 the load for which the committed
+     * solution is exact with the present flexibility.
+     */
+    void
+    set_load_fraction(const double s);
+
+    /** The solution of one path segment and where it ends. */
+    struct Segment;
+
+    /** Solves @p trial at s_a and at 1; false if singular. */
+    bool
+    solve_segment(Trial &trial, const double s_a, Segment &segment);
+
+    /**
+     * 3D: Newton on the slip directions of @p trial at the present load
+     * fraction (states fixed); returns false if singular.
+     */
+    bool
+    correct_directions(Trial &trial, Segment &segment);
+
+    /** The first event on @p segment: pair, kind and where. */
+    struct Event;
+    Event
+    first_event(const Trial &trial, const Segment &segment) const;
+
+    /** The state of the pair of @p event once it has happened. */
+    void
+    switch_state(Trial         &trial,
+                 const Segment &segment,
+                 const Event   &event) const;
+
     const std::vector<ContactPair<dim>>    contact_pairs;
     const unsigned int                     max_iterations;
     const unsigned int                     n_pairs;
@@ -279,6 +405,15 @@ namespace mbfem
     Trial                       current;
     Vector<double>              current_solution;
     std::vector<Tensor<1, dim>> current_displacement;
+    /** (rho, alpha) of the converged increment: the load path's start. */
+    Vector<double> committed_solution;
+
+    /** The load path: the data of the increment at s = 1 and at s = 0. */
+    Vector<double>      full_displacement, start_displacement;
+    std::vector<double> full_resultant, start_resultant;
+
+    StateMethod  method          = StateMethod::fast;
+    unsigned int fast_iterations = 0, path_switches = 0;
   };
 } // namespace mbfem
 

@@ -1,0 +1,519 @@
+#include <mbfem/base/exceptions.h>
+#include <mbfem/contact/contact_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <set>
+#include <sstream>
+
+// The load path: the terminating method of the contact state iteration
+// (doc/state_iteration.md, doc/decisions.md). Within one increment the load
+// goes from the last converged state (s = 0) to the increment's load
+// (s = 1). With the states fixed the interface system is linear, so its
+// solution is affine in s; the path follows it to the first s where a pair's
+// condition of the joint law fails, switches that pair there, and goes on:
+// a parametric principal pivoting method on the incremental frictional
+// problem (Klarbring's 2D LCP, Murty's parametric LCP), with the states as
+// the pivots. A switch happens where the quantity that decides it is zero,
+// so the path is continuous except where a pair breaks; it ends at s = 1
+// with the solution, or at a state that leaves a rigid motion free (a
+// mechanism) with the fraction of the increment it reached.
+
+namespace mbfem
+{
+  namespace internal
+  {
+    /** What made a pair switch on the path. */
+    enum class Condition : unsigned char
+    {
+      none,
+      tension,      // closed: r_N reached -sigma_t A
+      friction,     // stick: |r_T| reached c A + mu r_N
+      reversal,     // slip: the slip increment reached zero
+      tensile_flag, // slip with tensile strength: r_N changed sign
+      closure       // open: the gap reached zero
+    };
+
+    /** Samples of a segment searched for the first sign change. */
+    constexpr unsigned int n_samples = 32;
+    /**
+     * A condition fails where its margin (force over the largest force,
+     * displacement over the largest displacement) is below this; check()
+     * decides with the same relative tolerance.
+     */
+    constexpr double tolerance = 1e-9;
+  } // namespace internal
+
+  using internal::Condition;
+  using internal::n_samples;
+  using internal::tolerance;
+
+
+
+  template <int dim>
+  struct ContactSolver<dim>::Segment
+  {
+    double         s_a = 0.;
+    Vector<double> x_a, d_a, x_1, d_1;
+    double         force_scale = 1e-300, displacement_scale = 1e-300;
+
+    /** rho and d of pair @p k at t in [0, 1] (s = s_a + t (1 - s_a)). */
+    void
+    at(const unsigned int k,
+       const double       t,
+       Tensor<1, dim>    &rho,
+       Tensor<1, dim>    &d) const
+    {
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          const unsigned int j = k * dim + i;
+          rho[i]               = x_a(j) + t * (x_1(j) - x_a(j));
+          d[i]                 = d_a(j) + t * (d_1(j) - d_a(j));
+        }
+    }
+  };
+
+
+
+  template <int dim>
+  struct ContactSolver<dim>::Event
+  {
+    unsigned int pair      = numbers::invalid_unsigned_int;
+    Condition    condition = Condition::none;
+    double       t         = 2.; // where the margin reaches zero
+    double       t_failed  = 2.; // a point where it is below -tolerance
+  };
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::set_load_fraction(const double s)
+  {
+    external_displacement = start_displacement;
+    external_displacement.sadd(1. - s, s, full_displacement);
+    for (unsigned int a = 0; a < n_alpha_total; ++a)
+      external_resultant[a] =
+        (1. - s) * start_resultant[a] + s * full_resultant[a];
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::solve_segment(Trial       &trial,
+                                    const double s_a,
+                                    Segment     &segment)
+  {
+    segment.s_a = s_a;
+    set_load_fraction(s_a);
+    if (!solve_trial(trial, segment.x_a, segment.d_a))
+      return false;
+    set_load_fraction(1.);
+    if (!solve_trial(trial, segment.x_1, segment.d_1))
+      return false;
+
+    const unsigned int n_r = n_pairs * dim;
+    segment.force_scale = segment.displacement_scale = 1e-300;
+    for (unsigned int i = 0; i < n_r; ++i)
+      {
+        segment.force_scale        = std::max({segment.force_scale,
+                                               std::abs(segment.x_a(i)),
+                                               std::abs(segment.x_1(i))});
+        segment.displacement_scale = std::max({segment.displacement_scale,
+                                               std::abs(segment.d_a(i)),
+                                               std::abs(segment.d_1(i))});
+      }
+    for (const double f : full_resultant)
+      segment.force_scale = std::max(segment.force_scale, std::abs(f));
+    for (const auto &pair : contact_pairs)
+      segment.displacement_scale =
+        std::max(segment.displacement_scale, pair.initial_gap);
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::correct_directions(Trial &trial, Segment &segment)
+  {
+    // 3D: the slip direction is an unknown of the slip state. Newton on it
+    // at the segment's start, as the fast iteration does (pair_equations):
+    // the direction of the slip increment, and the weight of its
+    // linearisation (c A + mu r_N) / |slip increment|.
+    for (unsigned int iteration = 0; iteration < 25; ++iteration)
+      {
+        double change = 0.;
+        for (unsigned int k = 0; k < n_pairs; ++k)
+          {
+            if (trial.state[k] != ContactState::slip)
+              continue;
+            Tensor<1, dim> rho, d, v;
+            segment.at(k, 0., rho, d);
+            for (unsigned int e = 1; e < dim; ++e)
+              v[e] = d[e] - committed_displacement[k][e];
+            if (v.norm() < 1e-6 * segment.displacement_scale)
+              continue;
+            const Tensor<1, dim> s = v / v.norm();
+            change = std::max(change, (s - trial.slip_direction[k]).norm());
+            trial.slip_direction[k] = s;
+            trial.direction_stiffness[k] =
+              contact_pairs[k].joint.shear_strength(rho[0],
+                                                    contact_pairs[k].area,
+                                                    trial.broken[k],
+                                                    trial.tensile_slip[k]) /
+              v.norm();
+          }
+        if (change < 1e-6)
+          return true;
+        if (!solve_segment(trial, segment.s_a, segment))
+          return false;
+      }
+    return true;
+  }
+
+
+
+  template <int dim>
+  typename ContactSolver<dim>::Event
+  ContactSolver<dim>::first_event(const Trial   &trial,
+                                  const Segment &segment) const
+  {
+    const double F = segment.force_scale, D = segment.displacement_scale;
+    // The smallest margin of pair k's state at t, and which condition.
+    const auto margin = [&](const unsigned int k, const double t) {
+      const auto    &pair = contact_pairs[k];
+      Tensor<1, dim> rho, d;
+      segment.at(k, t, rho, d);
+      std::pair<double, Condition> worst(std::numeric_limits<double>::max(),
+                                         Condition::none);
+      const auto consider = [&](const double value, const Condition c) {
+        if (value < worst.first)
+          worst = {value, c};
+      };
+      const double tension =
+        pair.joint.tensile_limit(pair.area, trial.broken[k]);
+      Tensor<1, dim> r_t, increment;
+      for (unsigned int e = 1; e < dim; ++e)
+        {
+          r_t[e]       = rho[e];
+          increment[e] = d[e] - committed_displacement[k][e];
+        }
+      switch (trial.state[k])
+        {
+          case ContactState::stick:
+            consider((rho[0] + tension) / F, Condition::tension);
+            consider(
+              (pair.joint.shear_strength(rho[0], pair.area, trial.broken[k]) -
+               r_t.norm()) /
+                F,
+              Condition::friction);
+            break;
+          case ContactState::slip:
+            consider((rho[0] + tension) / F, Condition::tension);
+            consider(increment * trial.slip_direction[k] / D,
+                     Condition::reversal);
+            if (tension > 0.)
+              consider((trial.tensile_slip[k] ? -rho[0] : rho[0]) / F,
+                       Condition::tensile_flag);
+            break;
+          case ContactState::open:
+            consider((pair.initial_gap + d[0]) / D, Condition::closure);
+            break;
+        }
+      return worst;
+    };
+
+    Event first;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        if (contact_pairs[k].tied || std::all_of(held[k].begin(),
+                                                 held[k].end(),
+                                                 [](bool h) { return h; }))
+          continue;
+        // The first sample where the margin fails, then bisection to where
+        // it crosses zero.
+        double     low = 0., high = -1.;
+        const auto m_0       = margin(k, 0.);
+        Condition  condition = m_0.second;
+        if (m_0.first < -tolerance)
+          high = 0.;
+        for (unsigned int j = 1; j <= n_samples && high < 0.; ++j)
+          {
+            const double t = double(j) / n_samples;
+            const auto   m = margin(k, t);
+            if (m.first < -tolerance)
+              {
+                high      = t;
+                condition = m.second;
+              }
+            else
+              low = t;
+          }
+        if (high < 0. || high > first.t)
+          continue;
+        double crossing = high;
+        if (high > 0.)
+          {
+            for (unsigned int b = 0; b < 60; ++b)
+              {
+                const double middle = 0.5 * (low + high);
+                if (margin(k, middle).first < 0.)
+                  high = middle;
+                else
+                  low = middle;
+              }
+            crossing = high;
+          }
+        if (crossing < first.t)
+          {
+            first.pair      = k;
+            first.condition = condition;
+            first.t         = crossing;
+            // Where the condition is clearly failed: the direction of a
+            // new slip, or the slip of a pair that closes, is read there.
+            first.t_failed =
+              std::min(1., crossing + std::max(1e-3, 0.01 * (1. - crossing)));
+          }
+      }
+    return first;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::switch_state(Trial         &trial,
+                                   const Segment &segment,
+                                   const Event   &event) const
+  {
+    const unsigned int k    = event.pair;
+    const auto        &pair = contact_pairs[k];
+    Tensor<1, dim>     rho, d, rho_failed, d_failed;
+    segment.at(k, event.t, rho, d);
+    segment.at(k, event.t_failed, rho_failed, d_failed);
+    Tensor<1, dim> increment;
+    for (unsigned int e = 1; e < dim; ++e)
+      increment[e] = d[e] - committed_displacement[k][e];
+    const double D = segment.displacement_scale;
+
+    switch (event.condition)
+      {
+        case Condition::tension:
+          // Breaking is history: a pair that reaches its tensile strength
+          // loses it and its cohesion for good, here and in later
+          // increments; its force drops to zero (the one jump of the path).
+          if (!trial.broken[k] && pair.joint.has_strength())
+            trial.broken[k] = true;
+          trial.state[k]        = ContactState::open;
+          trial.tensile_slip[k] = false;
+          break;
+        case Condition::friction:
+          {
+            // Slips against its force, read where it exceeds the strength.
+            Tensor<1, dim> r_t;
+            for (unsigned int e = 1; e < dim; ++e)
+              r_t[e] = rho_failed[e];
+            trial.state[k] = ContactState::slip;
+            if (r_t.norm() > 0.)
+              trial.slip_direction[k] = -r_t / r_t.norm();
+            trial.direction_stiffness[k] = 0.;
+            trial.tensile_slip[k] =
+              rho[0] < 0. &&
+              pair.joint.tensile_limit(pair.area, trial.broken[k]) > 0.;
+            break;
+          }
+        case Condition::reversal:
+          trial.state[k] = ContactState::stick;
+          break;
+        case Condition::tensile_flag:
+          trial.tensile_slip[k] = !trial.tensile_slip[k];
+          break;
+        case Condition::closure:
+          // A pair that closes after moving tangentially while open cannot
+          // stick (that would undo the motion): it slips on, in the
+          // direction it was moving. One that closes where it opened
+          // sticks.
+          if (increment.norm() > 1e-6 * D)
+            {
+              trial.state[k]               = ContactState::slip;
+              trial.slip_direction[k]      = increment / increment.norm();
+              trial.direction_stiffness[k] = 0.;
+            }
+          else
+            trial.state[k] = ContactState::stick;
+          trial.tensile_slip[k] = false;
+          break;
+        case Condition::none:
+          Assert(false, ExcInternalError());
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactSolver<dim>::unload_against(Trial                &trial,
+                                     const Vector<double> &motion) const
+  {
+    // The tangential relative motion of each slipping pair under the
+    // mechanism's motion, against its slip direction.
+    std::vector<double> along(n_pairs, 0.);
+    double              largest = 0.;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        if (trial.state[k] != ContactState::slip)
+          continue;
+        Tensor<1, dim> w;
+        for (unsigned int e = 1; e < dim; ++e)
+          if (!held[k][e])
+            for (unsigned int a = 0; a < n_alpha_total; ++a)
+              w[e] += coupling(k * dim + e, a) * motion(a);
+        along[k] = w * trial.slip_direction[k];
+        largest  = std::max(largest, w.norm());
+      }
+    unsigned int n_switched = 0;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      if (along[k] < -1e-6 * largest)
+        {
+          trial.state[k] = ContactState::stick;
+          ++n_switched;
+        }
+    return n_switched;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactSolver<dim>::load_path(const unsigned int increment)
+  {
+    // The start: the load for which the committed solution is exact with
+    // the present C_hat, P_hat (these change between Newton's passes).
+    const unsigned int n_r = n_pairs * dim;
+    full_displacement      = external_displacement;
+    full_resultant         = external_resultant;
+    Vector<double> start(n_r + n_alpha_total);
+    if (committed_solution.size() == start.size())
+      start = committed_solution;
+    external_displacement.reinit(n_r);
+    start_displacement = relative_displacement(start);
+    start_displacement *= -1.;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      for (unsigned int i = 0; i < dim; ++i)
+        start_displacement(k * dim + i) += committed_displacement[k][i];
+    start_resultant.assign(n_alpha_total, 0.);
+    for (unsigned int a = 0; a < n_alpha_total; ++a)
+      for (unsigned int j = 0; j < n_r; ++j)
+        start_resultant[a] -= coupling(j, a) * start(j);
+
+    const std::string head    = "Load increment " + std::to_string(increment);
+    const auto        reached = [&](const double s, const unsigned int n) {
+      std::ostringstream text;
+      text << " (the load path held up to s = " << std::setprecision(6) << s
+           << " of this increment, after " << n << " state switches)";
+      return text.str();
+    };
+
+    Trial trial = committed;
+    std::fill(trial.direction_stiffness.begin(),
+              trial.direction_stiffness.end(),
+              0.);
+    double                s        = 0.;
+    unsigned int          switches = 0;
+    std::set<std::string> seen_here; // states met at this s
+    const unsigned int    max_switches = 20 * n_pairs + 100;
+    Segment               segment;
+    for (;;)
+      {
+        if (!solve_segment(trial, s, segment) ||
+            (dim == 3 && !correct_directions(trial, segment)))
+          {
+            // A mechanism whose motion would reverse the slip of some
+            // pairs is not the limit: those pairs stick, and the path goes
+            // on from the same s.
+            set_load_fraction(1.);
+            const Vector<double> free_motion = mechanism_motion(trial);
+            if (free_motion.size() > 0)
+              {
+                const unsigned int n = unload_against(trial, free_motion);
+                switches += n;
+                if (n > 0 && seen_here.insert(signature(trial)).second &&
+                    switches <= max_switches)
+                  continue;
+              }
+            const std::string motion = mechanism(trial);
+            AssertThrow(motion.empty(),
+                        Exceptions::ExcNoEquilibrium(head + ": no equilibrium" +
+                                                     reached(s, switches) +
+                                                     "." + motion));
+            AssertThrow(false,
+                        Exceptions::ExcIncrementNotConverged(
+                          head + ": the interface system is singular" +
+                          reached(s, switches) +
+                          ", and no rigid motion is free: check for pairs "
+                          "whose nodes are both fixed in some direction."));
+          }
+        const Event event = first_event(trial, segment);
+        if (event.pair == numbers::invalid_unsigned_int)
+          break;
+        const double s_event = s + event.t * (1. - s);
+        if (s_event > s + 1e-9)
+          seen_here.clear();
+        s = s_event;
+        switch_state(trial, segment, event);
+        ++switches;
+        AssertThrow(seen_here.insert(signature(trial)).second &&
+                      switches <= max_switches,
+                    Exceptions::ExcIncrementNotConverged(
+                      head +
+                      ": the load path cannot continue: the states of "
+                      "pair " +
+                      std::to_string(event.pair) +
+                      " and its neighbours cycle at one load" +
+                      reached(s, switches) + "."));
+      }
+
+    // At s = 1: the states the path ended with, solved and checked as the
+    // fast iteration does (in 3D its Newton on the slip directions ends
+    // there too).
+    set_load_fraction(1.);
+    const FastOutcome polish = fast_iteration(trial, increment);
+    AssertThrow(polish.converged,
+                Exceptions::ExcIncrementNotConverged(
+                  head + ": the load path reached the end of the increment" +
+                  reached(1., switches) +
+                  ", but its states do not settle there: " + polish.failure));
+    const std::string motion = mechanism(current);
+    AssertThrow(motion.empty(),
+                Exceptions::ExcNoEquilibrium(head + ": no equilibrium" +
+                                             reached(1., switches) + "." +
+                                             motion));
+    return switches + polish.iterations;
+  }
+
+
+
+  // The members defined in this file (the class itself is instantiated in
+  // contact_solver.cc).
+#define MBFEM_INSTANTIATE(dim)                                                 \
+  template void ContactSolver<dim>::set_load_fraction(double);                 \
+  template bool ContactSolver<dim>::solve_segment(Trial &, double, Segment &); \
+  template bool ContactSolver<dim>::correct_directions(Trial &, Segment &);    \
+  template void ContactSolver<dim>::switch_state(Trial &,                      \
+                                                 const Segment &,              \
+                                                 const Event &) const;         \
+  template unsigned int ContactSolver<dim>::load_path(unsigned int);           \
+  template unsigned int ContactSolver<dim>::unload_against(                    \
+    Trial &, const Vector<double> &) const;
+  MBFEM_INSTANTIATE(2)
+  MBFEM_INSTANTIATE(3)
+#undef MBFEM_INSTANTIATE
+  template ContactSolver<2>::Event
+  ContactSolver<2>::first_event(const Trial &, const Segment &) const;
+  template ContactSolver<3>::Event
+  ContactSolver<3>::first_event(const Trial &, const Segment &) const;
+} // namespace mbfem
