@@ -10,10 +10,12 @@ set -euo pipefail
 source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${MBFEM_BUILD_DIR:-$source_dir/build}
 
-# deal.II 9.4 with Trilinos, p4est, MPI, gmsh, UMFPACK; gmsh for meshes;
+# deal.II 9.4 with Trilinos, p4est, MPI, gmsh, UMFPACK; MUMPS's C API
+# (block flexibilities); OpenBLAS (threaded) for dense LAPACK and MUMPS
+# through Debian's alternatives; gmsh for meshes;
 # numdiff and perl for deal.II's test macros; clang-format for the style
 # check; the compiler and build tools.
-packages="libdeal.ii-dev libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format ccache"
+packages="libdeal.ii-dev libmumps-dev libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format ccache"
 
 missing=""
 for package in $packages; do
