@@ -225,54 +225,6 @@ namespace mbfem
 
 
 
-  FullMatrix<double>
-  MumpsSolver::schur_complement(const TrilinosWrappers::SparseMatrix &matrix,
-                                const std::vector<unsigned int>      &schur)
-  {
-    DMUMPS_STRUC_C &id = data->id;
-    if (data->initialised)
-      {
-        id.job = -2;
-        dmumps_c(&id);
-      }
-    id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
-    id.par          = 1;
-    id.sym          = 2;
-    id.job          = -1;
-    dmumps_c(&id);
-    data->initialised = true;
-    icntl(id, 1)      = -1;
-    icntl(id, 2)      = -1;
-    icntl(id, 3)      = -1;
-    icntl(id, 4)      = 0;
-    icntl(id, 7)      = 4;
-    icntl(id, 14)     = 40;
-    icntl(id, 19)     = 1; // centralised, by rows (one triangle for sym)
-    set_matrix(matrix);
-
-    const unsigned int     m = schur.size();
-    std::vector<MUMPS_INT> list(m);
-    for (unsigned int i = 0; i < m; ++i)
-      list[i] = schur[i] + 1;
-    std::vector<double> values(std::size_t(m) * m);
-    id.size_schur    = m;
-    id.listvar_schur = list.data();
-    id.schur         = values.data();
-    run(4, "Schur complement");
-
-    // One triangle is returned (the other holds unrelated values): the
-    // lower one of the row-major array, i.e. S(i, j) for j <= i read as
-    // values[i * m + j] ... stored by rows: copy it to both halves.
-    FullMatrix<double> result(m, m);
-    for (unsigned int i = 0; i < m; ++i)
-      for (unsigned int j = 0; j <= i; ++j)
-        result(i, j) = result(j, i) = values[std::size_t(j) * m + i];
-    icntl(id, 19) = 0;
-    return result;
-  }
-
-
-
   std::size_t
   MumpsSolver::size() const
   {

@@ -14,15 +14,14 @@ namespace mbfem
   /**
    * A symmetric matrix factorised by MUMPS (Debian's libmumps-dev, one
    * process on MPI_COMM_SELF), called through its C API rather than
-   * through Amesos, because the multi-body method needs two things Amesos
-   * does not expose:
-   *
-   * - selected entries of the inverse (ICNTL(30)): a block's contact
-   *   flexibility is (K^{-1}) restricted to its contact DoFs, which MUMPS
-   *   computes with sparse right-hand sides and pruned triangular solves,
-   *   several times cheaper than solving against dense unit loads;
-   * - the Schur complement on a set of variables (ICNTL(19)), the other
-   *   road to the same flexibility (doc/benchmarks.md compares them).
+   * through Amesos, because the multi-body method needs what Amesos does
+   * not expose: selected entries of the inverse (ICNTL(30)). A block's
+   * contact flexibility is (K^{-1}) restricted to its contact DoFs, which
+   * MUMPS computes with sparse right-hand sides and pruned triangular
+   * solves, several times cheaper than solving against dense unit loads
+   * (design.md section 4: 5.0 s against 11.8 s for 4131 contact DoFs of a
+   * 37,179-DoF block; the Schur complement of ICNTL(19) and its inverse,
+   * the other road, 5.3 s).
    *
    * Debian's MUMPS has no METIS or SCOTCH: the ordering is PORD. Not
    * thread-safe: one object is used by one thread at a time.
@@ -61,16 +60,6 @@ namespace mbfem
     FullMatrix<double>
     inverse_entries(const std::vector<unsigned int> &rows,
                     const std::vector<unsigned int> &columns) const;
-
-    /**
-     * A fresh factorisation of @p matrix that returns the Schur complement
-     * S = A_cc - A_ci A_ii^{-1} A_ic on the variables @p schur (ICNTL(19),
-     * the Schur variables ordered last). Leaves this object without a
-     * usable factorisation of the whole matrix.
-     */
-    FullMatrix<double>
-    schur_complement(const TrilinosWrappers::SparseMatrix &matrix,
-                     const std::vector<unsigned int>      &schur);
 
     std::size_t
     size() const;
