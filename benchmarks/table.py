@@ -60,6 +60,8 @@ def fit(points):
     mx = sum(p[0] for p in points) / n
     my = sum(p[1] for p in points) / n
     sxx = sum((p[0] - mx) ** 2 for p in points)
+    if sxx == 0.:
+        return float("nan")
     return sum((p[0] - mx) * (p[1] - my) for p in points) / sxx
 
 
@@ -74,7 +76,7 @@ for name in names:
     elastic = (sum(e["phases"][p] for p in ("assembly", "factorisation", "load response"))
                if e and not e["failed"] else float("nan"))
     rows.append((name, r, elastic))
-    if name.startswith("stacked") and r["increments"] == 10 and not r["failed"]:
+    if re.fullmatch(r"stacked_\d+", name) and not r["failed"]:
         fits.append((r["pairs"], r["condensed"], r["memory"]))
 
 try:
@@ -121,7 +123,7 @@ for name, r, elastic in rows:
         cells[0] += " (failed)"
     out.append("| " + " | ".join(cells) + " |")
 out.append("")
-if len(fits) >= 2:
+if len({f[0] for f in fits}) >= 2:
     out.append("Fitted exponents over the stacked models with 10 increments "
                f"({', '.join(str(f[0]) for f in fits)} pairs): condensed time "
                f"~ pairs^{fit([(f[0], f[1]) for f in fits]):.2f}, peak memory "
