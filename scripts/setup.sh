@@ -10,11 +10,14 @@ set -euo pipefail
 source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${MBFEM_BUILD_DIR:-$source_dir/build}
 
-# deal.II 9.4 with Trilinos, p4est, MPI, gmsh, UMFPACK; gmsh for meshes;
+# deal.II 9.4 with Trilinos, p4est, MPI, gmsh, UMFPACK; MUMPS's C API
+# (block flexibilities); OpenBLAS (threaded) for dense LAPACK and MUMPS
+# through Debian's alternatives; gmsh for meshes;
 # numdiff and perl for deal.II's test macros; clang-format for the style
-# check; COIN-OR Clp for the statics certificate's linear program;
-# matplotlib for the default example's figure; the compiler and build tools.
-packages="libdeal.ii-dev libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format ccache coinor-libclp-dev python3-matplotlib"
+# check; COIN-OR Clp for the statics certificate's linear program; MUMPS's
+# C API for the block flexibilities; matplotlib for the default example's
+# figure; the compiler and build tools.
+packages="libdeal.ii-dev libmumps-dev libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format coinor-libclp-dev python3-matplotlib"
 
 missing=""
 for package in $packages; do

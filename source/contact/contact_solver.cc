@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <map>
+#include <numeric>
 #include <set>
 #include <sstream>
 
@@ -81,6 +82,43 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /**
+     * H = S C S^T for a block: C its flexibility over its contact DoFs, S
+     * the (sides x dim) x (contact DoFs) map of signed, weighted nodes
+     * rotated into each side's pair frame (@p rows: per row of S, its
+     * (DoF index, coefficient) entries). Two sparse-times-dense passes;
+     * C is released after the first.
+     */
+    FullMatrix<double>
+    project(
+      FullMatrix<double>                                              &c,
+      const std::vector<std::vector<std::pair<unsigned int, double>>> &rows)
+    {
+      const unsigned int m = c.m(), n = rows.size();
+      // T = C S^T (m x n), then H = S T, both along contiguous rows.
+      FullMatrix<double> t(m, n);
+      for (unsigned int q = 0; q < m; ++q)
+        for (unsigned int r = 0; r < n; ++r)
+          {
+            double value = 0.;
+            for (const auto &[p, weight] : rows[r])
+              value += weight * c(q, p);
+            t(q, r) = value;
+          }
+      c.reinit(0, 0);
+      FullMatrix<double> h(n, n);
+      for (unsigned int r = 0; r < n; ++r)
+        for (const auto &[q, weight] : rows[r])
+          for (unsigned int s = 0; s < n; ++s)
+            h(r, s) += weight * t(q, s);
+      return h;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   ContactSolver<dim>::setup(
@@ -103,8 +141,10 @@ namespace mbfem
         mode_coefficients.push_back(blocks[b]->free_rigid_body_modes());
       }
 
-    // Global components first: C_a and P.
-    FullMatrix<double> c_global(condensed ? n_r : 0, condensed ? n_r : 0);
+    // Per block: H_b (condensed) and the block's part of P.
+    block_flexibility.clear();
+    pair_sides.assign(n_pairs, {});
+    condensed_system = CondensedSystem();
     FullMatrix<double> p_global(n_r, n_alpha_total);
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
@@ -127,66 +167,53 @@ namespace mbfem
         if (dofs.empty())
           continue;
 
+        const auto &modes = blocks[b]->floating_modes();
+        // A side's displacement is sum_i w_i u(node_i), in its pair's
+        // frame: the rows of S (see project()) and P take the same weights.
+        std::vector<std::vector<std::pair<unsigned int, double>>> rows(
+          sides.size() * dim);
+        BlockFlexibility flexibility;
+        for (unsigned int s = 0; s < sides.size(); ++s)
+          {
+            const auto &[k, sign]       = sides[s];
+            const Tensor<2, dim> &frame = contact_pairs[k].frame;
+            flexibility.pairs.push_back(k);
+            pair_sides[k].emplace_back(block_flexibility.size(), s);
+            for (const auto &node : contact_pairs[k].side(sign).nodes)
+              {
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    if (frame[i][c] != 0.)
+                      rows[s * dim + i].emplace_back(index_of[node.dofs[c]],
+                                                     sign * node.weight *
+                                                       frame[i][c]);
+                for (unsigned int a = 0; a < modes.size(); ++a)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    p_global(k * dim + c, alpha_offset[b] + a) +=
+                      sign * node.weight * modes[a](node.dofs[c]);
+              }
+          }
         // The monolithic system needs no flexibility; the free modes at
         // the pairs (P) it still needs to name a block it cannot hold.
-        const FullMatrix<double> c_block =
-          condensed ? blocks[b]->flexibility(dofs) : FullMatrix<double>();
-        const auto &modes = blocks[b]->floating_modes();
-        // A side's displacement is sum_i w_i u(node_i): C_a and P take
-        // the same weights.
-        for (const auto &[k, sign_k] : sides)
+        if (condensed)
           {
-            const auto &nodes_k = contact_pairs[k].side(sign_k).nodes;
-            if (condensed)
-              for (const auto &[l, sign_l] : sides)
-                for (const auto &node_k : nodes_k)
-                  for (const auto &node_l : contact_pairs[l].side(sign_l).nodes)
-                    {
-                      const double weight =
-                        sign_k * sign_l * node_k.weight * node_l.weight;
-                      for (unsigned int c = 0; c < dim; ++c)
-                        for (unsigned int e = 0; e < dim; ++e)
-                          c_global(k * dim + c, l * dim + e) +=
-                            weight * c_block(index_of[node_k.dofs[c]],
-                                             index_of[node_l.dofs[e]]);
-                    }
-            for (const auto &node : nodes_k)
-              for (unsigned int a = 0; a < modes.size(); ++a)
-                for (unsigned int c = 0; c < dim; ++c)
-                  p_global(k * dim + c, alpha_offset[b] + a) +=
-                    sign_k * node.weight * modes[a](node.dofs[c]);
+            FullMatrix<double> c_block = blocks[b]->flexibility(dofs);
+            flexibility.matrix         = project(c_block, rows);
           }
+        block_flexibility.push_back(std::move(flexibility));
       }
 
-    // Into the pairs' frames.
-    flexibility.reinit(condensed ? n_r : 0, condensed ? n_r : 0);
+    // P into the pairs' frames.
     coupling.reinit(n_r, n_alpha_total);
     for (unsigned int k = 0; k < n_pairs; ++k)
-      {
-        const Tensor<2, dim> &rk = contact_pairs[k].frame;
-        for (unsigned int l = 0; l < n_pairs && condensed; ++l)
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int a = 0; a < n_alpha_total; ++a)
           {
-            const Tensor<2, dim> &rl = contact_pairs[l].frame;
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                {
-                  double value = 0.;
-                  for (unsigned int c = 0; c < dim; ++c)
-                    for (unsigned int e = 0; e < dim; ++e)
-                      value += rk[i][c] * c_global(k * dim + c, l * dim + e) *
-                               rl[j][e];
-                  flexibility(k * dim + i, l * dim + j) = value;
-                }
+            double value = 0.;
+            for (unsigned int c = 0; c < dim; ++c)
+              value += contact_pairs[k].frame[i][c] * p_global(k * dim + c, a);
+            coupling(k * dim + i, a) = value;
           }
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int a = 0; a < n_alpha_total; ++a)
-            {
-              double value = 0.;
-              for (unsigned int c = 0; c < dim; ++c)
-                value += rk[i][c] * p_global(k * dim + c, a);
-              coupling(k * dim + i, a) = value;
-            }
-      }
 
     if (monolithic)
       {
@@ -195,16 +222,16 @@ namespace mbfem
         return;
       }
 
-    double trace = 0.;
+    std::vector<double> diagonal(n_r);
     for (unsigned int i = 0; i < n_r; ++i)
-      trace += flexibility(i, i);
-    flexibility_scale = (n_r > 0 && trace > 0. ? trace / n_r : 1.);
+      diagonal[i] = flexibility_entry(i, i);
+    const double trace = std::accumulate(diagonal.begin(), diagonal.end(), 0.);
+    flexibility_scale  = (n_r > 0 && trace > 0. ? trace / n_r : 1.);
 
     // A direction in which neither node can move (both on supports) carries
     // no contact force: the supports take it.
-    double max_diagonal = 0.;
-    for (unsigned int i = 0; i < n_r; ++i)
-      max_diagonal = std::max(max_diagonal, flexibility(i, i));
+    const double max_diagonal =
+      n_r > 0 ? *std::max_element(diagonal.begin(), diagonal.end()) : 0.;
     held.assign(n_pairs, std::array<bool, dim>());
     for (unsigned int k = 0; k < n_pairs; ++k)
       for (unsigned int d = 0; d < dim; ++d)
@@ -213,9 +240,25 @@ namespace mbfem
           for (unsigned int a = 0; a < n_alpha_total; ++a)
             mobility = std::max(mobility, std::abs(coupling(k * dim + d, a)));
           held[k][d] =
-            flexibility(k * dim + d, k * dim + d) < 1e-12 * max_diagonal &&
-            mobility < 1e-12;
+            diagonal[k * dim + d] < 1e-12 * max_diagonal && mobility < 1e-12;
         }
+  }
+
+
+
+  template <int dim>
+  double
+  ContactSolver<dim>::flexibility_entry(const unsigned int row,
+                                        const unsigned int column) const
+  {
+    const unsigned int k = row / dim, l = column / dim;
+    double             value = 0.;
+    for (const auto &[b, s] : pair_sides[k])
+      for (const auto &[c, t] : pair_sides[l])
+        if (b == c)
+          value += block_flexibility[b].matrix(s * dim + row % dim,
+                                               t * dim + column % dim);
+    return value;
   }
 
 
@@ -302,50 +345,126 @@ namespace mbfem
     const std::vector<PairEquation<dim>> &equations,
     Vector<double>                       &solution) const
   {
-    const unsigned int       n_r = n_pairs * dim;
-    const unsigned int       n   = n_r + n_alpha_total;
-    LAPACKFullMatrix<double> matrix(n, n);
-    Vector<double>           rhs(n);
+    const unsigned int n_r = n_pairs * dim;
     // Unknowns: rho * scale (a displacement) and alpha, so that all entries
     // are of unit order whatever the units of the model; the singularity
     // test below then means the same for a rubber and a rock model. A row
     // with force terms is multiplied by scale.
     const double scale = flexibility_scale;
 
+    // A row that says rho_i = 0 (open pairs, held directions) removes its
+    // unknown: only the directions of the other pairs and the floating
+    // modes remain, some 250 of 4131 unknowns on the 1377-pair model.
+    std::vector<double>       key;
+    std::vector<unsigned int> unknowns;
+    key.reserve(n_r * (2 * dim + 1));
     for (unsigned int row = 0; row < n_r; ++row)
       {
+        const PairEquation<dim> &eq   = equations[row];
+        bool                     zero = eq.value == 0.;
+        for (unsigned int e = 0; e < dim; ++e)
+          {
+            key.push_back(eq.force_coefficients[e]);
+            key.push_back(eq.displacement_coefficients[e]);
+            zero = zero && eq.displacement_coefficients[e] == 0. &&
+                   (eq.force_coefficients[e] == 0.) == (e != row % dim);
+          }
+        key.push_back(zero ? 1. : 0.);
+        if (!zero)
+          unknowns.push_back(row);
+      }
+    const unsigned int n_rho = unknowns.size();
+    const unsigned int n     = n_rho + n_alpha_total;
+    if (n == 0)
+      {
+        // Every pair open and no floating block: all forces are zero (LAPACK
+        // refuses a 0 x 0 factorisation).
+        solution.reinit(n_r);
+        return true;
+      }
+
+    CondensedSystem &system = condensed_system;
+    if (system.coefficients != key || system.matrix.m() != n)
+      {
+        system.coefficients = key;
+        system.unknowns     = unknowns;
+        assemble_condensed(equations, system);
+      }
+    if (!system.regular)
+      return false;
+
+    Vector<double> rhs(n);
+    for (unsigned int i = 0; i < n_rho; ++i)
+      {
+        const unsigned int       row   = unknowns[i];
+        const PairEquation<dim> &eq    = equations[row];
+        double                   value = eq.value;
+        for (unsigned int e = 0; e < dim; ++e)
+          value -= eq.displacement_coefficients[e] *
+                   external_displacement((row / dim) * dim + e);
+        rhs(i) = (eq.has_force_terms() ? scale : 1.) * value;
+      }
+    for (unsigned int a = 0; a < n_alpha_total; ++a)
+      rhs(n_rho + a) = -external_resultant[a] * scale;
+    system.matrix.solve(rhs);
+
+    solution.reinit(n_r + n_alpha_total);
+    for (unsigned int i = 0; i < n_rho; ++i)
+      solution(unknowns[i]) = rhs(i) / scale;
+    for (unsigned int a = 0; a < n_alpha_total; ++a)
+      solution(n_r + a) = rhs(n_rho + a);
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::assemble_condensed(
+    const std::vector<PairEquation<dim>> &equations,
+    CondensedSystem                      &system) const
+  {
+    const unsigned int               n_r      = n_pairs * dim;
+    const std::vector<unsigned int> &unknowns = system.unknowns;
+    const unsigned int               n_rho    = unknowns.size();
+    const unsigned int               n        = n_rho + n_alpha_total;
+    const double                     scale    = flexibility_scale;
+    std::vector<int>                 column_of(n_r, -1);
+    for (unsigned int i = 0; i < n_rho; ++i)
+      column_of[unknowns[i]] = i;
+
+    LAPACKFullMatrix<double> &matrix = system.matrix;
+    matrix.reinit(n, n);
+    for (unsigned int i = 0; i < n_rho; ++i)
+      {
+        const unsigned int       row       = unknowns[i];
         const unsigned int       k         = row / dim;
         const PairEquation<dim> &eq        = equations[row];
-        const bool               force_row = eq.has_force_terms();
-        const double             row_scale = (force_row ? scale : 1.);
+        const double             row_scale = eq.has_force_terms() ? scale : 1.;
         // d_e = C_hat rho + P_hat alpha + Delta_F, with rho = x / scale.
-        double value = eq.value;
         for (unsigned int e = 0; e < dim; ++e)
           {
             const double a = eq.displacement_coefficients[e];
             if (a != 0.)
               {
                 const unsigned int source = k * dim + e;
-                for (unsigned int j = 0; j < n_r; ++j)
-                  matrix(row, j) +=
-                    row_scale * a * flexibility(source, j) / scale;
+                for (unsigned int j = 0; j < n_rho; ++j)
+                  matrix(i, j) += row_scale * a *
+                                  flexibility_entry(source, unknowns[j]) /
+                                  scale;
                 for (unsigned int b = 0; b < n_alpha_total; ++b)
-                  matrix(row, n_r + b) += row_scale * a * coupling(source, b);
-                value -= a * external_displacement(source);
+                  matrix(i, n_rho + b) += row_scale * a * coupling(source, b);
               }
-            if (eq.force_coefficients[e] != 0.)
-              matrix(row, k * dim + e) += eq.force_coefficients[e];
+            if (eq.force_coefficients[e] != 0. && column_of[k * dim + e] >= 0)
+              matrix(i, column_of[k * dim + e]) += eq.force_coefficients[e];
           }
-        rhs(row) = row_scale * value;
       }
     // Equilibrium of the floating blocks: P^T r = -F_e.
     for (unsigned int a = 0; a < n_alpha_total; ++a)
-      {
-        for (unsigned int j = 0; j < n_r; ++j)
-          matrix(n_r + a, j) = coupling(j, a);
-        rhs(n_r + a) = -external_resultant[a] * scale;
-      }
+      for (unsigned int j = 0; j < n_rho; ++j)
+        matrix(n_rho + a, j) = coupling(unknowns[j], a);
 
+    system.regular    = false;
     const double norm = matrix.l1_norm();
     try
       {
@@ -353,7 +472,7 @@ namespace mbfem
       }
     catch (const LACExceptions::ExcSingular &)
       {
-        return false; // an exactly zero pivot
+        return; // an exactly zero pivot
       }
     // Condition estimate ||A||_1 ||A^{-1}||_1 from two pseudo-random
     // right-hand sides (LAPACKFullMatrix's own estimate is for Cholesky).
@@ -367,13 +486,7 @@ namespace mbfem
         matrix.solve(probe);
         inverse_norm = std::max(inverse_norm, probe.l1_norm() / probe_norm);
       }
-    if (!(norm * inverse_norm < 1e12))
-      return false;
-    matrix.solve(rhs);
-    for (unsigned int i = 0; i < n_r; ++i)
-      rhs(i) /= scale;
-    solution = rhs;
-    return true;
+    system.regular = norm * inverse_norm < 1e12;
   }
 
 
@@ -518,15 +631,32 @@ namespace mbfem
     const Vector<double> &solution) const
   {
     const unsigned int n_r = n_pairs * dim;
-    Vector<double>     d(n_r);
+    Vector<double>     d(external_displacement);
     for (unsigned int i = 0; i < n_r; ++i)
+      for (unsigned int a = 0; a < n_alpha_total; ++a)
+        d(i) += coupling(i, a) * solution(n_r + a);
+    // C_hat rho block by block, over the sides whose force is not zero.
+    for (const auto &flexibility : block_flexibility)
       {
-        double value = external_displacement(i);
-        for (unsigned int j = 0; j < n_r; ++j)
-          value += flexibility(i, j) * solution(j);
-        for (unsigned int a = 0; a < n_alpha_total; ++a)
-          value += coupling(i, a) * solution(n_r + a);
-        d(i) = value;
+        const unsigned int        n_sides = flexibility.pairs.size();
+        std::vector<unsigned int> columns;
+        std::vector<double>       forces;
+        for (unsigned int t = 0; t < n_sides; ++t)
+          for (unsigned int j = 0; j < dim; ++j)
+            if (solution(flexibility.pairs[t] * dim + j) != 0.)
+              {
+                columns.push_back(t * dim + j);
+                forces.push_back(solution(flexibility.pairs[t] * dim + j));
+              }
+        for (unsigned int s = 0; s < n_sides; ++s)
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              double value = 0.;
+              for (unsigned int c = 0; c < columns.size(); ++c)
+                value +=
+                  flexibility.matrix(s * dim + i, columns[c]) * forces[c];
+              d(flexibility.pairs[s] * dim + i) += value;
+            }
       }
     return d;
   }

@@ -214,8 +214,10 @@ namespace mbfem
     /**
      * Displacements at @p dofs under a unit force at each of @p dofs in
      * turn: the block's contact flexibility (paper eq. 2, C = K^{-1}
-     * restricted to contact DoFs), from one factorisation and blocks of
-     * right-hand sides. Symmetric.
+     * restricted to contact DoFs): with 500 or more contact DoFs as
+     * selected entries of the inverse of a MUMPS factorisation
+     * (contact_flexibility()), below that by unit loads on the block's own
+     * factorisation, in blocks of right-hand sides. Symmetric.
      */
     FullMatrix<double>
     flexibility(const std::vector<types::global_dof_index> &dofs) const;

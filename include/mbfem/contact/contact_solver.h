@@ -9,6 +9,7 @@
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <memory>
 #include <string>
@@ -387,8 +388,54 @@ namespace mbfem
     std::vector<std::string>                 block_names;
     std::vector<std::vector<Vector<double>>> mode_coefficients;
 
-    /** In the pairs' frames: C_hat = R C_a R^T, P_hat = R P. */
-    FullMatrix<double> flexibility;
+    /**
+     * The flexibility C_hat = R C_a R^T in the pairs' frames, kept per
+     * block, so that its memory is the sum over blocks of (contact DoFs of
+     * the block)^2 rather than (all contact DoFs)^2: for block b, the
+     * signed, weighted and rotated C_b over the pair sides on b,
+     * H_b(s i, t j) = sign_s sign_t sum w w R_s[i] . C_b R_t[j]. C_hat of
+     * two pairs is the sum of H_b over the blocks they share.
+     */
+    struct BlockFlexibility
+    {
+      /** The pair of each side on this block (a side per row group). */
+      std::vector<unsigned int> pairs;
+      FullMatrix<double>        matrix;
+    };
+    std::vector<BlockFlexibility> block_flexibility;
+    /** For each pair, its sides: (index into block_flexibility, side). */
+    std::vector<std::vector<std::pair<unsigned int, unsigned int>>> pair_sides;
+
+    /** C_hat(k * dim + i, l * dim + j) from the blocks' H_b. */
+    double
+    flexibility_entry(const unsigned int row, const unsigned int column) const;
+
+    /**
+     * The dense system of the last solve_condensed(), over the unknowns
+     * its states leave free (the directions of the pairs that are not
+     * open, and the floating modes), LU-factorised: a trial whose
+     * equations have the same coefficients (only their values differ)
+     * reuses it. A cache, hence mutable.
+     */
+    struct CondensedSystem
+    {
+      std::vector<double>       coefficients; // the key
+      std::vector<unsigned int> unknowns;     // active rows of rho
+      LAPACKFullMatrix<double>  matrix;
+      bool                      regular = false;
+    };
+    mutable CondensedSystem condensed_system;
+
+    /**
+     * Builds and LU-factorises the system of @p equations over
+     * system.unknowns; system.regular says whether it has a solution
+     * (condition estimate below 1e12).
+     */
+    void
+    assemble_condensed(const std::vector<PairEquation<dim>> &equations,
+                       CondensedSystem                      &system) const;
+
+    /** P_hat = R P in the pairs' frames. */
     FullMatrix<double> coupling;
     /** Mean diagonal of flexibility: scales the forces in the system. */
     double flexibility_scale = 1.;
