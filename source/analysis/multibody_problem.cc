@@ -1062,7 +1062,9 @@ namespace mbfem
           << ", t = " << time << ": ";
     if (contact)
       {
-        double min_normal = 0., max_normal = 0., max_tangential = 0.,
+        // The range of the normal traction over the pairs that are not
+        // tied (0 and 0 where every pair is tied).
+        double min_normal = 1e300, max_normal = -1e300, max_tangential = 0.,
                max_gap = 0.;
         for (unsigned int i = 0; i < contact->pairs().size(); ++i)
           {
@@ -1077,6 +1079,8 @@ namespace mbfem
             max_tangential = std::max(max_tangential, tangential.norm() / area);
             max_gap        = std::max(max_gap, contact->gap(i));
           }
+        if (min_normal > max_normal)
+          min_normal = max_normal = 0.;
         // Which method concluded the state iteration: named only where
         // the fast iteration did not (the screen lines of the increments
         // it concludes stay as they were).

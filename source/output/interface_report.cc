@@ -3,36 +3,137 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace mbfem
 {
   namespace
   {
-    /** Smallest and largest of a coordinate; empty while min > max. */
-    struct Range
+    /**
+     * Axes in the mean plane of an interface, along which the summary gives
+     * the extent of the closed and stuck pairs (an x-range means nothing on
+     * an inclined or a 3D interface). The mean normal is the area-weighted
+     * normal of the interface's pairs (tied pairs, whose frame is the
+     * global axes, left out). In 2D the one axis is the normal turned by
+     * 90 degrees; in 3D the first is the strike (horizontal, or x on a
+     * horizontal interface) and the second the dip line. Each axis points
+     * so that its first non-zero component is positive, so a horizontal
+     * interface has the axes x (and y), as before.
+     */
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    in_plane_axes(const std::vector<ContactPair<dim>> &pairs,
+                  const unsigned int                   interface)
     {
-      double min = 1e300;
-      double max = -1e300;
+      Tensor<1, dim> normal;
+      for (const auto &pair : pairs)
+        if (pair.interface == interface && !pair.tied)
+          normal += pair.area * pair.frame[0];
+      if (normal.norm() == 0.)
+        normal[dim - 1] = 1.; // all pairs tied: the global axes
+      normal /= normal.norm();
+
+      std::vector<Tensor<1, dim>> axes;
+      if constexpr (dim == 2)
+        axes.push_back(Tensor<1, dim>({-normal[1], normal[0]}));
+      else
+        {
+          Tensor<1, dim> vertical;
+          vertical[dim - 1]     = 1.;
+          Tensor<1, dim> strike = cross_product_3d(vertical, normal);
+          if (strike.norm() < 1e-12) // horizontal interface
+            {
+              strike    = Tensor<1, dim>();
+              strike[0] = 1.;
+            }
+          strike /= strike.norm();
+          axes.push_back(strike);
+          axes.push_back(cross_product_3d(normal, strike));
+        }
+      for (auto &axis : axes)
+        for (unsigned int d = 0; d < dim; ++d)
+          if (std::abs(axis[d]) > 1e-12)
+            {
+              if (axis[d] < 0.)
+                axis *= -1.;
+              break;
+            }
+      return axes;
+    }
+
+
+
+    /** "s" for the one axis of a 2D interface, "s1" and "s2" in 3D. */
+    std::string
+    axis_name(const unsigned int j, const std::size_t n_axes)
+    {
+      return n_axes == 1 ? std::string("s") : "s" + std::to_string(j + 1);
+    }
+
+
+
+    /**
+     * Smallest and largest coordinate of a set of pairs along each in-plane
+     * axis of their interface; empty while nothing was added.
+     */
+    template <int dim>
+    struct Extents
+    {
+      std::vector<Tensor<1, dim>> axes;
+      std::vector<double>         min, max;
+
+      explicit Extents(const std::vector<Tensor<1, dim>> &axes)
+        : axes(axes)
+        , min(axes.size(), 1e300)
+        , max(axes.size(), -1e300)
+      {}
 
       void
-      add(const double x)
+      add(const Point<dim> &point)
       {
-        min = std::min(min, x);
-        max = std::max(max, x);
+        for (unsigned int j = 0; j < axes.size(); ++j)
+          {
+            min[j] = std::min(min[j], point * axes[j]);
+            max[j] = std::max(max[j], point * axes[j]);
+          }
       }
 
       std::string
       to_string() const
       {
         std::ostringstream s;
-        if (min > max)
-          s << "none";
-        else
-          s << std::fixed << std::setprecision(5) << "x from " << min << " to "
-            << max << " (half-width " << 0.5 * (max - min) << ")";
+        if (min[0] > max[0])
+          return "none";
+        s << std::fixed << std::setprecision(5);
+        for (unsigned int j = 0; j < axes.size(); ++j)
+          s << (j > 0 ? ", " : "") << axis_name(j, axes.size()) << " from "
+            << min[j] << " to " << max[j] << " (half-width "
+            << 0.5 * (max[j] - min[j]) << ")";
         return s.str();
       }
     };
+
+
+
+    /** The axes of Extents, written once per interface. */
+    template <int dim>
+    std::string
+    axes_to_string(const std::vector<Tensor<1, dim>> &axes)
+    {
+      std::ostringstream s;
+      s << std::fixed << std::setprecision(4);
+      for (unsigned int j = 0; j < axes.size(); ++j)
+        {
+          s << (j > 0 ? ", " : "") << axis_name(j, axes.size()) << " along (";
+          for (unsigned int d = 0; d < dim; ++d)
+            s << (d > 0 ? ", " : "") << axes[j][d] + 0.; // no -0.0000
+          s << ")";
+        }
+      return s.str();
+    }
+
+
 
     /** Squared L2 errors of p and q, and of the exact fields' norms. */
     struct TractionErrors
@@ -158,7 +259,8 @@ namespace mbfem
     for (unsigned int i = 0; i < parameters.interfaces.size(); ++i)
       {
         double         p_max = 0., q_max = 0.;
-        Range          closed, stuck;
+        const auto     axes = in_plane_axes(pairs, i);
+        Extents<dim>   closed(axes), stuck(axes);
         TractionErrors errors;
         for (unsigned int k = 0; k < pairs.size(); ++k)
           if (pairs[k].interface == i)
@@ -167,17 +269,17 @@ namespace mbfem
               p_max            = std::max(p_max, q[0]);
               q[0]             = 0.;
               q_max            = std::max(q_max, q.norm());
-              const double x   = pairs[k].midpoint()[0];
               if (contact.state(k) != ContactState::open)
-                closed.add(x);
+                closed.add(pairs[k].midpoint());
               if (contact.state(k) == ContactState::stick)
-                stuck.add(x);
+                stuck.add(pairs[k].midpoint());
               if (with_errors)
                 add_traction_errors(contact, parameters, k, errors);
             }
         pcout << "  interface " << i + 1
               << " at the end: max p = " << std::setprecision(6) << p_max
-              << ", max |q| = " << q_max
+              << ", max |q| = " << q_max << "\n    extents "
+              << axes_to_string(axes)
               << "\n    closed pairs: " << closed.to_string()
               << "\n    stuck pairs:  " << stuck.to_string() << "\n"
               << "    Coulomb: " << coulomb_check(contact, i) << "\n";
