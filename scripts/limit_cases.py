@@ -210,8 +210,9 @@ def write_case(work, case, lam):
 
 
 def summarise(stdout, stderr):
-    """(iterations summed, increments by the load path, halvings, first
-    message line, every message line)."""
+    """(iterations summed, increments by the load path, halvings, the
+    certificate's strength factor or None, first message line, every
+    message line)."""
     iterations = path = halvings = 0
     for line in stdout.splitlines():
         m = re.match(r"\s*increment \d+/\d+, t = [^:]*: (\d+) iteration"
@@ -220,12 +221,15 @@ def summarise(stdout, stderr):
             iterations += int(m.group(1))
             path += m.group(2) is not None
         halvings += "failed (" in line and "halving" in line
+    m = re.search(r"strength factor ([0-9.]+)|divided by up to ([0-9.]+)",
+                  stderr)
+    strength = float(m.group(1) or m.group(2)) if m else None
     message = ""
     for line in stderr.splitlines():
         if "Load increment" in line or "Statics certificate" in line:
             message = line.strip()
             break
-    return iterations, path, halvings, message, stderr
+    return iterations, path, halvings, strength, message, stderr
 
 
 def run(mbfem, work, case, lam):
@@ -274,30 +278,34 @@ def main():
     os.makedirs(work, exist_ok=True)
     if args.markdown:
         print("| case | lambda | F | exit | result | iterations | "
-              "load-path increments | halvings | s | message |")
-        print("|---|---|---|---|---|---|---|---|---|---|")
+              "load-path increments | halvings | LP limit | s | message |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|")
     else:
-        print("%-24s %7s %8s %4s %-14s %5s %4s %4s %7s  %s" % (
+        print("%-24s %7s %8s %4s %-14s %5s %4s %4s %8s %7s  %s" % (
             "case", "lambda", "F", "exit", "result", "iter", "path", "halv",
-            "seconds", "first message"))
+            "LP", "seconds", "first message"))
     wrong = 0
     start = time.time()
     for case in cases(work, args.quick, matrices):
         if args.only not in case.name:
             continue
         for lam in case.lambdas:
-            code, seconds, iterations, path, halvings, message, stderr = \
-                run(args.mbfem, work, case, lam)
+            code, seconds, iterations, path, halvings, strength, message, \
+                stderr = run(args.mbfem, work, case, lam)
             note = verdict(case, lam, code, stderr)
             wrong += note != ""
-            row = (case.name, lam, lam * case.f_limit, code,
-                   OUTCOME.get(code, "error"), iterations, path, halvings,
-                   seconds, (note + " " if note else "") + message[:100])
+            factor = lam * case.f_limit
+            # The certificate's LP limit, F x its strength factor (at the
+            # loads of the failing step).
+            lp = "%.5f" % (factor * strength) if strength else "-"
+            row = (case.name, lam, factor, code, OUTCOME.get(code, "error"),
+                   iterations, path, halvings, lp, seconds,
+                   (note + " " if note else "") + message[:100])
             if args.markdown:
-                print("| %s | %.4f | %.5f | %d | %s | %d | %d | %d | %.1f | "
-                      "%s |" % row, flush=True)
+                print("| %s | %.4f | %.5f | %d | %s | %d | %d | %d | %s | "
+                      "%.1f | %s |" % row, flush=True)
             else:
-                print("%-24s %7.4f %8.5f %4d %-14s %5d %4d %4d %7.1f  %s"
+                print("%-24s %7.4f %8.5f %4d %-14s %5d %4d %4d %8s %7.1f  %s"
                       % row, flush=True)
     print("%d run(s) differ from the limit's verdict; %.0f s in all; work "
           "folder %s" % (wrong, time.time() - start, work))

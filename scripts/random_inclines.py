@@ -58,11 +58,14 @@ BELOW, BEYOND = 0.97, 1.03
 MAX_ROUNDS = 6
 
 
-def forces(b):
-    """(W, N, T): the weight, its normal component, the driving force."""
+def forces(b, t=1.):
+    """(W, N, T) at pseudo-time t: the weight, its normal component, the
+    driving force (the weight ramped with t if b["ramp"], the lateral
+    pressure always)."""
     th = math.radians(b["theta"])
-    W = UNIT_WEIGHT * b["L"] * b["H"]
-    return W, W * math.cos(th), W * math.sin(th) + b["p_lat"] * b["H"]
+    W = UNIT_WEIGHT * b["L"] * b["H"] * (min(t, 1.) if b["ramp"] else 1.)
+    return (W, W * math.cos(th),
+            W * math.sin(th) + t * b["p_lat"] * b["H"])
 
 
 def limit(b, area):
@@ -71,9 +74,9 @@ def limit(b, area):
     return (b["c"] * area + N * math.tan(math.radians(b["phi"]))) / T
 
 
-def cohesive_area(b, factor):
-    """The area with cohesion for which 'factor' is the limit."""
-    _, N, T = forces(b)
+def cohesive_area(b, factor, t):
+    """The area with cohesion for which 'factor' is the limit at time t."""
+    _, N, T = forces(b, t)
     return (factor * T - N * math.tan(math.radians(b["phi"]))) / b["c"]
 
 
@@ -188,8 +191,8 @@ def broken_area(results):
 
 
 def run(mbfem, folder, name, mesh, b, factor):
-    """(outcome, seconds, broken area at the end, certificate's LP limit or
-    None, load-path increments)."""
+    """(outcome, seconds, broken area at the end, (the certificate's LP
+    limit, its time t) or None, load-path increments)."""
     prm = write_case(folder, name, mesh, b, factor)
     results = os.path.join(folder, name)
     shutil.rmtree(results, ignore_errors=True)
@@ -197,9 +200,10 @@ def run(mbfem, folder, name, mesh, b, factor):
     r = subprocess.run([mbfem, prm], cwd=folder, capture_output=True,
                        text=True)
     seconds = time.time() - start
-    m = re.search(r"no statically admissible contact forces exist.*?"
-                  r"strength factor ([0-9.]+)", r.stderr, re.S)
-    lp = factor * float(m.group(1)) if m else None
+    m = re.search(r"Statics certificate at t = ([0-9.e+-]+): no statically "
+                  r"admissible contact forces exist.*?strength factor "
+                  r"([0-9.]+)", r.stderr, re.S)
+    lp = (factor * float(m.group(2)), float(m.group(1))) if m else None
     path = len(re.findall(r"load path \d+\)", r.stdout))
     if r.returncode not in (0, 2):
         sys.stderr.write("%s exited with %d:\n%s\n" % (prm, r.returncode,
@@ -224,7 +228,7 @@ def campaign_block(mbfem, work, i, b):
         if below[0] == "converged":
             kept = b["L"] - below[2]
         elif below[3] is not None:
-            kept = cohesive_area(b, below[3])
+            kept = cohesive_area(b, *below[3])
         else:
             break
         if kept >= area - 1e-6 * b["L"]:
@@ -246,7 +250,7 @@ def describe(result, test):
     if broken > 0.:
         text += " broken %.3f m" % broken
     if lp is not None:
-        text += " LP %.4f" % lp
+        text += " LP %.4f at t = %.4g" % lp
     if path:
         text += " path %d" % path
     return text + " %.1f s" % seconds
