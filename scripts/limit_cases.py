@@ -38,9 +38,9 @@ The matrices of issue 20 (--matrix, default all):
   python3 scripts/limit_cases.py [--mbfem build/mbfem] [--matrix dam]
                                  [--only 'p=1'] [--quick] [--markdown]
 
-Meshes other than the committed ones (the dam at 0.5 and 0.25 m joint
-elements are committed too, but regenerated with gmsh if missing) go into
-the work folder.
+The dam meshes with 0.5 and 0.25 m joint elements are generated with
+gmsh from meshes/gravity_dam.geo (-setnumber h) into the work folder
+(gmsh 4.8.4 regenerates the committed 1 m mesh byte for byte).
 """
 
 import argparse
@@ -81,8 +81,8 @@ class Case:
 
 
 def dam_mesh(work, h):
-    """The dam mesh with joint elements of h m (committed for 1, 0.5,
-    0.25; generated with gmsh into the work folder otherwise)."""
+    """The dam mesh with joint elements of h m (committed for h = 1,
+    generated with gmsh into the work folder otherwise)."""
     committed = os.path.join(SOURCE, "meshes", "gravity_dam_h%g.msh" % h)
     if os.path.exists(committed):
         return committed
