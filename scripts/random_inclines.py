@@ -6,30 +6,46 @@ friction, cohesion, a lateral pressure on the up-slope face, p = 1 or 2,
 1 to 20 increments, gravity ramped or not) run at 0.97 and 1.03 of their
 rigid-block limit; none may fail at 0.97, none converge at 1.03.
 
-The limit is the strength factor of a rigid block sliding on its base:
+The limit is the strength factor of the rigid-block linear program (the
+statics certificate's), which for one block on one plane is in closed
+form: the pairs' friction capacity is mu N whatever the distribution of
+the normal forces, their cohesion c times the area of the pairs that keep
+it, and the moments balance as long as the normal resultant lies within
+the base, so
 
-  F = (c L + W cos(theta) tan(phi)) / (W sin(theta) + P),
+  F = (c A_c + W cos(theta) tan(phi)) / (W sin(theta) + P),
 
-W the weight, L the base length, P = p_lat H the lateral thrust down-dip.
-Blocks are drawn so that the base's normal resultant lies in the middle
-70 % of the base, so that the block slides before it topples and no pair
-needs tension: the rigid-block LP of the certificate then has exactly this
-limit (for a block whose pairs all stay closed; a pair that opens loses its
-cohesion, which the closed form does not know, so cohesion is drawn for
-one block in three only and reported apart).
+W the weight, A_c the area of the unbroken pairs (the base length L before
+any breaks), P = p_lat H the lateral thrust down-dip. Blocks are drawn so
+that the normal resultant lies in the middle 70 % of the base (the block
+slides before it topples), and so that 0.2 < F < 5 (mu = tan(phi) / F
+neither tiny nor huge).
+
+Cohesion is drawn for one block in three. A pair that opens breaks and
+loses its cohesion for good (doc/state_iteration.md), which lowers the
+limit to the LP without cohesion at the broken pairs. The run at 0.97 of
+F(L) reads the pairs it broke from its last pair file; if it broke any,
+the block's limit is F(A_c) with those pairs' area removed, and both runs
+are repeated at 0.97 and 1.03 of it (up to six rounds, until the run at
+0.97 breaks no further pairs). The line of such a block names the rounds.
 
   python3 scripts/random_inclines.py [--count 100] [--seed 20] [--mbfem ...]
+                                     [--test]
 
-Writes NAME.prm and the mesh of every block into the work folder, runs
-mbfem at both factors, and prints one line per block and a summary with
-counts per outcome (exit code: 0 converged, 2 certified no equilibrium,
-3 not converged although admissible, 1 other) and the time.
+Writes the parameter file and the mesh of every block into the work
+folder, runs mbfem, and prints one line per block and a summary with the
+counts per outcome (exit code: 0 converged, 2 certified no equilibrium, 3
+not converged although admissible, 1 other). --test leaves out the times
+and the work folder, for a stored output (tests/campaigns/).
 """
 
 import argparse
+import glob
 import math
 import os
 import random
+import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -38,54 +54,80 @@ import time
 SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUTCOME = {0: "converged", 2: "certified-none", 3: "not-converged"}
 UNIT_WEIGHT = 25e3
+BELOW, BEYOND = 0.97, 1.03
+MAX_ROUNDS = 6
+
+
+def forces(b, t=1.):
+    """(W, N, T) at pseudo-time t: the weight, its normal component, the
+    driving force (the weight ramped with t if b["ramp"], the lateral
+    pressure always)."""
+    th = math.radians(b["theta"])
+    W = UNIT_WEIGHT * b["L"] * b["H"] * (min(t, 1.) if b["ramp"] else 1.)
+    return (W, W * math.cos(th),
+            W * math.sin(th) + t * b["p_lat"] * b["H"])
+
+
+def limit(b, area):
+    """The rigid-block strength factor with cohesion on 'area' of base."""
+    _, N, T = forces(b)
+    return (b["c"] * area + N * math.tan(math.radians(b["phi"]))) / T
+
+
+def cohesive_area(b, factor, t):
+    """The area with cohesion for which 'factor' is the limit at time t."""
+    _, N, T = forces(b, t)
+    return (factor * T - N * math.tan(math.radians(b["phi"]))) / b["c"]
 
 
 def draw(rng):
     """One block; resampled until it slides before it topples."""
     while True:
         b = dict(L=rng.uniform(0.5, 4.), H=rng.uniform(0.3, 3.),
-                 theta=rng.uniform(0.5, 30.), phi=rng.uniform(10., 45.),
+                 theta=rng.uniform(0., 30.), phi=rng.uniform(10., 45.),
                  c=(rng.uniform(0., 20e3) if rng.random() < 1. / 3 else 0.),
                  p_lat=(rng.uniform(0., 10e3) if rng.random() < 0.5 else 0.),
                  p=rng.choice([1, 2]), n_inc=rng.randint(1, 20),
                  ramp=rng.random() < 0.5)
         th = math.radians(b["theta"])
-        W = UNIT_WEIGHT * b["L"] * b["H"]
-        N = W * math.cos(th)
-        T = W * math.sin(th) + b["p_lat"] * b["H"]
+        W, N, T = forces(b)
+        if T <= 0.:
+            continue
         # Position of the normal resultant from the down-dip corner.
         x_n = (W * (b["L"] * math.cos(th) - b["H"] * math.sin(th)) / 2
                - b["p_lat"] * b["H"] * b["H"] / 2) / N
         if not 0.15 * b["L"] < x_n < 0.85 * b["L"]:
             continue
-        b["limit"] = (b["c"] * b["L"] + N * math.tan(math.radians(b["phi"]))) / T
-        # Strength factors far from 1 make tiny or huge mu: keep 0.2..5.
+        b["limit"] = limit(b, b["L"])
         if not 0.2 < b["limit"] < 5.:
             continue
         b["n"] = max(2, min(12, int(round(4 * b["L"] / b["p"]))))
         return b
 
 
-def write_case(folder, i, b, lam):
+def write_mesh(folder, i, b):
     mesh = os.path.join(folder, "block%03d.msh" % i)
     if not os.path.exists(mesh):
         subprocess.run(["gmsh", "-2", "-format", "msh22",
-                        "-setnumber", "L", str(b["L"]),
-                        "-setnumber", "H", str(b["H"]),
-                        "-setnumber", "theta", str(b["theta"]),
+                        "-setnumber", "L", repr(b["L"]),
+                        "-setnumber", "H", repr(b["H"]),
+                        "-setnumber", "theta", repr(b["theta"]),
                         "-setnumber", "n", str(b["n"]),
                         os.path.join(SOURCE, "meshes", "incline_block.geo"),
                         "-o", mesh], check=True, stdout=subprocess.DEVNULL)
-    factor = lam * b["limit"]
+    return mesh
+
+
+def write_case(folder, name, mesh, b, factor):
     th = math.radians(b["theta"])
     # Lateral pressure on the up-slope face (boundary 2), pushing down-dip,
     # ramped with the load history.
     traction = "%.9g*t; %.9g*t" % (-b["p_lat"] * math.cos(th),
                                    -b["p_lat"] * math.sin(th))
-    prm = os.path.join(folder, "block%03d-%g.prm" % (i, lam))
+    prm = os.path.join(folder, name + ".prm")
     with open(prm, "w") as f:
-        f.write("""# Random incline block %d (seed in the summary): %s
-# Rigid-block limit F = %.6f; run at %.2f of it.
+        f.write("""# Random incline block (scripts/random_inclines.py): %s
+# Run at the strength factor F = %.9g.
 set Dimension = 2
 subsection Mesh
   set Source    = gmsh
@@ -116,13 +158,132 @@ subsection Contact
   set Cohesion             = %.9g
 end
 subsection Output
+  set Base name = block
+  set Directory = %s
   set Write VTU = false
 end
-""" % (i, {k: (round(v, 4) if isinstance(v, float) else v)
-           for k, v in b.items()}, b["limit"], lam, mesh, b["p"],
-            UNIT_WEIGHT, "1" if b["ramp"] else "0", traction, b["n_inc"],
-            math.tan(math.radians(b["phi"])) / factor, b["c"] / factor))
+""" % ({k: (round(v, 4) if isinstance(v, float) else v)
+        for k, v in b.items()}, factor, mesh, b["p"], UNIT_WEIGHT,
+            "1" if b["ramp"] else "0", traction, b["n_inc"],
+            math.tan(math.radians(b["phi"])) / factor, b["c"] / factor,
+            name))
     return prm
+
+
+def broken_area(results):
+    """Area of the broken pairs in the last pair file in 'results'."""
+    files = sorted(glob.glob(os.path.join(results, "block-pairs-*.csv")))
+    if not files:
+        return 0.
+    area = 0.
+    header = None
+    for line in open(files[-1]):
+        if line.startswith("#"):
+            continue
+        fields = line.strip().split(",")
+        if header is None:
+            header = fields
+            continue
+        row = dict(zip(header, fields))
+        if row["broken"] == "1":
+            area += float(row["area"])
+    return area
+
+
+def run(mbfem, folder, name, mesh, b, factor):
+    """(outcome, seconds, broken area at the end, (the certificate's LP
+    limit, its time t) or None, load-path increments)."""
+    prm = write_case(folder, name, mesh, b, factor)
+    results = os.path.join(folder, name)
+    shutil.rmtree(results, ignore_errors=True)
+    start = time.time()
+    r = subprocess.run([mbfem, prm], cwd=folder, capture_output=True,
+                       text=True)
+    seconds = time.time() - start
+    m = re.search(r"Statics certificate at t = ([0-9.e+-]+): no statically "
+                  r"admissible contact forces exist.*?strength factor "
+                  r"([0-9.]+)", r.stderr, re.S)
+    lp = (factor * float(m.group(2)), float(m.group(1))) if m else None
+    path = len(re.findall(r"load path \d+\)", r.stdout))
+    if r.returncode not in (0, 2):
+        sys.stderr.write("%s exited with %d:\n%s\n" % (prm, r.returncode,
+                                                       r.stderr))
+    return (OUTCOME.get(r.returncode, "error"), seconds, broken_area(results),
+            lp, path)
+
+
+def campaign_block(mbfem, work, i, b):
+    """Runs block i at 0.97 and 1.03 of its limit, rounds as described
+    above; returns (reference limit, rounds, results at 0.97, at 1.03)."""
+    mesh = write_mesh(work, i, b)
+    area = b["L"]
+    for rounds in range(1, MAX_ROUNDS + 1):
+        reference = limit(b, area)
+        below = run(mbfem, work, "block%03d-below" % i, mesh, b,
+                    BELOW * reference)
+        if b["c"] == 0. or rounds == MAX_ROUNDS:
+            break
+        # The area the run kept cohesive: from its last pair file if it
+        # converged, from the certificate's limit if it failed.
+        if below[0] == "converged":
+            kept = b["L"] - below[2]
+        elif below[3] is not None:
+            kept = cohesive_area(b, *below[3])
+        else:
+            break
+        if kept >= area - 1e-6 * b["L"]:
+            break
+        area = max(kept, 0.)
+    beyond = run(mbfem, work, "block%03d-beyond" % i, mesh, b,
+                 BEYOND * reference)
+    return reference, rounds, below, beyond
+
+
+def describe(result, test):
+    """The outcome; out of test mode also the broken area, the
+    certificate's LP limit, the increments the load path concluded and the
+    time, which round-off may move (a pair breaking or not)."""
+    outcome, seconds, broken, lp, path = result
+    text = "%-14s" % outcome
+    if test:
+        return text.strip()
+    if broken > 0.:
+        text += " broken %.3f m" % broken
+    if lp is not None:
+        text += " LP %.4f at t = %.4g" % lp
+    if path:
+        text += " path %d" % path
+    return text + " %.1f s" % seconds
+
+
+def block_line(i, b, reference, rounds, below, beyond, test):
+    return ("block %3d L=%.2f H=%.2f theta=%5.2f phi=%4.1f c=%5.0f "
+            "p_lat=%5.0f p=%d inc=%2d ramp=%d F=%.4f%s | 0.97: %s | "
+            "1.03: %s" % (
+                i, b["L"], b["H"], b["theta"], b["phi"], b["c"], b["p_lat"],
+                b["p"], b["n_inc"], b["ramp"],
+                b["limit"] if test else reference,
+                " (round %d, closed form %.4f)" % (rounds, b["limit"])
+                if rounds > 1 and not test else "",
+                describe(below, test), describe(beyond, test)))
+
+
+def summary(counts, seed, count, seconds):
+    """The summary lines; 'seconds' None in test mode."""
+    n_below = sum(v for k, v in counts.items()
+                  if k[0] == BELOW and k[2] == "converged")
+    n_beyond = sum(v for k, v in counts.items()
+                   if k[0] == BEYOND and k[2] == "certified-none")
+    lines = ["", "summary (seed %d, %d blocks%s):" % (
+        seed, count, "" if seconds is None else ", %.0f s" % seconds)]
+    for key in sorted(counts):
+        lines.append("  at %.2f of the limit, %s: %-15s %d"
+                     % (key + (counts[key],)))
+    lines.append("converged at %.2f of the limit: %d of %d"
+                 % (BELOW, n_below, count))
+    lines.append("certified no equilibrium (exit 2) at %.2f of the limit: "
+                 "%d of %d" % (BEYOND, n_beyond, count))
+    return lines, n_below == n_beyond == count
 
 
 def main():
@@ -132,41 +293,45 @@ def main():
     parser.add_argument("--mbfem", default=os.path.join(SOURCE, "build",
                                                         "mbfem"))
     parser.add_argument("--work", default="")
+    parser.add_argument("--blocks", default="",
+                        help="run only these blocks (comma-separated "
+                        "indices; the others are drawn, not run)")
+    parser.add_argument("--test", action="store_true",
+                        help="no times, no work folder (stored output)")
+    parser.add_argument("--test-output", default="",
+                        help="also write the test-mode output to this file")
     args = parser.parse_args()
+    if not os.access(args.mbfem, os.X_OK):
+        sys.exit("--mbfem: %s is not an executable" % args.mbfem)
     work = args.work or tempfile.mkdtemp(prefix="mbfem-random-inclines-")
     os.makedirs(work, exist_ok=True)
     rng = random.Random(args.seed)
     counts = {}
+    test_lines = []
     start = time.time()
     for i in range(args.count):
         b = draw(rng)
-        line = []
-        for lam in (0.97, 1.03):
-            prm = write_case(work, i, b, lam)
-            r = subprocess.run([args.mbfem, prm], cwd=work,
-                               capture_output=True, text=True)
-            outcome = OUTCOME.get(r.returncode, "error")
-            cohesive = "c>0" if b["c"] > 0 else "c=0"
-            key = (lam, cohesive, outcome)
+        if args.blocks and str(i) not in args.blocks.split(","):
+            continue
+        result = campaign_block(args.mbfem, work, i, b)
+        cohesive = "c>0" if b["c"] > 0 else "c=0"
+        for lam, run_result in ((BELOW, result[2]), (BEYOND, result[3])):
+            key = (lam, cohesive, run_result[0])
             counts[key] = counts.get(key, 0) + 1
-            first = ""
-            if r.returncode != 0:
-                for l in r.stderr.splitlines():
-                    if "Load increment" in l:
-                        first = l.strip()[:70]
-                        break
-            line.append("%.2f: %-14s %s" % (lam, outcome, first))
-        print("block %3d L=%.2f H=%.2f theta=%5.2f phi=%4.1f c=%7.0f "
-              "p_lat=%6.0f p=%d inc=%2d ramp=%d F=%.4f | %s" % (
-                  i, b["L"], b["H"], b["theta"], b["phi"], b["c"],
-                  b["p_lat"], b["p"], b["n_inc"], b["ramp"], b["limit"],
-                  " | ".join(line)), flush=True)
-    print("\nsummary (seed %d, %d blocks, %.0f s):" % (
-        args.seed, args.count, time.time() - start))
-    for key in sorted(counts):
-        print("  at %.2f of the limit, %s: %-15s %d" % (key + (counts[key],)))
-    print("work folder:", work)
-    return 0
+        print(block_line(i, b, *result, args.test), flush=True)
+        test_lines.append(block_line(i, b, *result, True))
+    n_run = sum(counts.values()) // 2
+    lines, passed = summary(counts, args.seed, n_run,
+                            None if args.test else time.time() - start)
+    print("\n".join(lines))
+    if args.test_output:
+        with open(args.test_output, "w") as f:
+            f.write("\n".join(test_lines + summary(counts, args.seed,
+                                                   n_run, None)[0])
+                    + "\n")
+    if not args.test:
+        print("work folder:", work)
+    return 0 if passed else 1
 
 
 if __name__ == "__main__":
