@@ -193,7 +193,8 @@ check(const Model &model, const double expected_volume = 0.)
 
 
 // Runs the file named by argv[1] (push argv[2], default 0): the full-size
-// models, too long for the test suite.
+// models, too long for the test suite. 'Dimension = 3' and 'Unit weight'
+// are read from the file's own text (not from files it includes).
 inline int
 run_file(int argc, char *argv[])
 {
