@@ -1,6 +1,7 @@
 #include <mbfem/base/exceptions.h>
 #include <mbfem/contact/monolithic_system.h>
 
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <cmath>
@@ -9,6 +10,35 @@
 
 namespace mbfem
 {
+  namespace
+  {
+    /**
+     * A block's stiffness under its physical constraints alone, without
+     * pins, so singular for a floating block (its free modes are held by
+     * the contact multipliers of the whole system instead). Constrained
+     * rows keep a diagonal entry.
+     */
+    template <int dim>
+    void
+    unpinned_stiffness(const Block<dim>     &block,
+                       SparsityPattern      &pattern,
+                       SparseMatrix<double> &matrix)
+    {
+      const AffineConstraints<double> &constraints =
+        block.get_physical_constraints();
+      DynamicSparsityPattern dsp(block.n_dofs());
+      DoFTools::make_sparsity_pattern(block.dof_handler,
+                                      dsp,
+                                      constraints,
+                                      false);
+      pattern.copy_from(dsp);
+      matrix.reinit(pattern);
+      block.assemble_matrix(constraints, matrix);
+    }
+  } // namespace
+
+
+
   template <int dim>
   MonolithicSystem<dim>::MonolithicSystem(const std::string &solver_package)
     : solver(solver_package)
@@ -33,7 +63,7 @@ namespace mbfem
       {
         offset[b] = n_displacements;
         n_displacements += blocks[b]->n_dofs();
-        blocks[b]->assemble_unpinned_stiffness(patterns[b], stiffness[b]);
+        unpinned_stiffness(*blocks[b], patterns[b], stiffness[b]);
         const auto &constraints = blocks[b]->get_physical_constraints();
         for (types::global_dof_index i = 0; i < blocks[b]->n_dofs(); ++i)
           if (!constraints.is_constrained(i))
@@ -177,7 +207,7 @@ namespace mbfem
   {
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
-        const Vector<double> &f = blocks[b]->unpinned_load();
+        const Vector<double> &f = blocks[b]->get_physical_load();
         for (types::global_dof_index i = 0; i < f.size(); ++i)
           load(offset[b] + i) = f(i);
       }
