@@ -64,7 +64,7 @@ namespace mbfem
                             block.name());
         block.set_initial_state(&parameters.in_situ_stress,
                                 &parameters.excavation);
-        block.set_plasticity(parameters.plasticity);
+        block.plastic_state().initialize(parameters.plasticity, block);
         const InSituStress &in_situ = parameters.in_situ_stress;
         AssertThrow(!in_situ.enabled ||
                       std::abs(material.unit_weight - in_situ.unit_weight) <=
@@ -297,7 +297,7 @@ namespace mbfem
     const unsigned int plastic_iterations =
       solve_increment(k, iterations, reference_iterations, plastic_update);
     for (const auto &block : blocks)
-      block->commit_plastic_strain();
+      block->plastic_state().commit();
     if (dim == 3 && contact && contact->count(ContactState::slip) > 0)
       pcout << "    friction against the slip made: largest angle "
             << std::fixed << std::setprecision(1) << contact->misalignment()
@@ -517,7 +517,7 @@ namespace mbfem
           std::is_same_v<std::decay_t<decltype(failure)>,
                          Exceptions::ExcNoEquilibrium>);
       for (const auto &block : blocks)
-        block->restore_plastic_state();
+        block->plastic_state().restore();
       ++halvings;
       step                     = (target - reached) / 2.;
       const std::string reason = message_of(failure);
@@ -601,7 +601,7 @@ namespace mbfem
   MultiBodyProblem<dim>::commit_step()
   {
     for (const auto &block : blocks)
-      block->commit_plastic_strain();
+      block->plastic_state().commit();
     if (contact)
       contact->commit();
     if (reference)
@@ -687,10 +687,10 @@ namespace mbfem
     double                      previous_change    = 0.;
     double                      omega              = 1.;
     // Newton may give way to the initial-stress method for the rest of
-    // the step (see Block::suspend_newton()).
+    // the step (see PlasticState::suspend_newton()).
     bool newton = plasticity.newton;
     for (const auto &block : blocks)
-      block->suspend_newton(false);
+      block->plastic_state().suspend_newton(false);
     for (;;)
       {
         // Newton: the contact states of the last pass start the next.
@@ -710,7 +710,7 @@ namespace mbfem
         {
           TimerOutput::Scope t(timer, "plasticity");
           for (const auto &block : blocks)
-            plastic_update += block->update_plastic_strain();
+            plastic_update += block->plastic_state().update(*block);
         }
         const double change = std::sqrt(plastic_update.change2 /
                                         std::max(plastic_update.norm2, 1e-300));
@@ -751,7 +751,7 @@ namespace mbfem
                    aitken_relaxation(omega, plastic_update) :
                    1.);
         for (const auto &block : blocks)
-          block->relax_plastic_strain(omega);
+          block->plastic_state().relax(omega);
       }
     return plastic_iterations;
   }
@@ -848,7 +848,7 @@ namespace mbfem
     // while the elastic one is not.
     bool suspended = false;
     for (const auto &block : blocks)
-      suspended = block->suspend_newton(true) || suspended;
+      suspended = block->plastic_state().suspend_newton(true) || suspended;
     if (!suspended)
       throw; // the elastic stiffness would fail alike: not Newton's fault
     ++newton_suspensions;
@@ -870,7 +870,7 @@ namespace mbfem
   {
     bool changed = false;
     for (const auto &block : blocks)
-      if (block->tangent_changed())
+      if (block->plastic_state().tangent_changed())
         {
           changed = true;
           {

@@ -17,17 +17,6 @@
 
 namespace mbfem
 {
-  namespace
-  {
-    /** eps : eps */
-    template <int n>
-    double
-    squared(const SymmetricTensor<2, n> &t)
-    {
-      return t * t;
-    }
-  } // namespace
-
   void
   DiscretisationParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -138,47 +127,20 @@ namespace mbfem
 
 
 
-  PlasticUpdate &
-  PlasticUpdate::operator+=(const PlasticUpdate &other)
+  template <int dim>
+  PlasticState<dim> &
+  Block<dim>::plastic_state()
   {
-    change2 += other.change2;
-    norm2 += other.norm2;
-    aitken_numerator += other.aitken_numerator;
-    aitken_denominator += other.aitken_denominator;
-    n_yielded += other.n_yielded;
-    n_points += other.n_points;
-    yielded_measure += other.yielded_measure;
-    max_equivalent = std::max(max_equivalent, other.max_equivalent);
-    return *this;
+    return plastic;
   }
 
 
 
   template <int dim>
-  void
-  Block<dim>::set_plasticity(const PlasticityParameters &parameters)
+  const PlasticState<dim> &
+  Block<dim>::plastic_state() const
   {
-    if (!parameters.enabled)
-      return;
-    mohr_coulomb = std::make_unique<MohrCoulomb>(parameters, material);
-    const std::size_t n =
-      triangulation.n_active_cells() * std::size_t(n_plastic_points());
-    plastic_strain_committed.assign(n, SymmetricTensor<2, 3>());
-    plastic_strain.assign(n, SymmetricTensor<2, 3>());
-    plastic_strain_load.assign(n, SymmetricTensor<2, 3>());
-    plastic_residual.assign(n, SymmetricTensor<2, 3>());
-    plastic_residual_previous.assign(n, SymmetricTensor<2, 3>());
-    yielded.assign(n, false);
-    newton = parameters.newton;
-    if (newton)
-      {
-        elastic_tangent = mohr_coulomb->elastic_tangent<dim>();
-        linearisation.tangent.assign(n, elastic_tangent);
-        linearisation.plastic.assign(n, false);
-        linearisation.strain.assign(n, SymmetricTensor<2, dim>());
-        linearisation.stress.assign(n, SymmetricTensor<2, dim>());
-        linearisation_committed = linearisation;
-      }
+    return plastic;
   }
 
 
@@ -187,245 +149,7 @@ namespace mbfem
   bool
   Block<dim>::is_plastic() const
   {
-    return mohr_coulomb != nullptr;
-  }
-
-
-
-  template <int dim>
-  unsigned int
-  Block<dim>::n_plastic_points() const
-  {
-    return state_quadrature().size();
-  }
-
-
-
-  template <int dim>
-  SymmetricTensor<2, 3>
-  Block<dim>::plastic_stress(const unsigned int cell,
-                             const unsigned int q) const
-  {
-    return mohr_coulomb->elastic_stress(
-      plastic_strain_load[cell * n_plastic_points() + q]);
-  }
-
-
-
-  template <int dim>
-  PlasticUpdate
-  Block<dim>::update_plastic_strain()
-  {
-    PlasticUpdate result;
-    if (!mohr_coulomb)
-      return result;
-    FEValues<dim>                        fe_values(mapping,
-                            fe,
-                            state_quadrature(),
-                            update_gradients | update_quadrature_points |
-                              update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<SymmetricTensor<2, dim>> eps(fe_values.n_quadrature_points);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        fe_values.reinit(cell);
-        fe_values[displacement].get_function_symmetric_gradients(solution, eps);
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          {
-            const std::size_t index =
-              cell->active_cell_index() * fe_values.n_quadrature_points + q;
-            SymmetricTensor<2, 3> strain; // plane strain: eps_zz = 0
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = i; j < dim; ++j)
-                strain[i][j] = eps[q][i][j];
-            SymmetricTensor<2, 3> trial = mohr_coulomb->elastic_stress(
-              strain - plastic_strain_committed[index]);
-            if (in_situ)
-              trial += in_situ->stress_3d(fe_values.quadrature_point(q));
-            SymmetricTensor<2, 3> stress, increment;
-            yielded[index] = mohr_coulomb->return_map(trial, stress, increment);
-            const SymmetricTensor<2, 3> updated =
-              plastic_strain_committed[index] + increment;
-            const double JxW = fe_values.JxW(q);
-            if (newton && !newton_suspended)
-              {
-                update_newton_point(index, eps[q], trial, stress, JxW, result);
-                plastic_strain_load[index] = updated;
-              }
-            else
-              {
-                const SymmetricTensor<2, 3> residual =
-                  updated - plastic_strain_load[index];
-                result.change2 += squared(residual) * JxW;
-                if (have_previous_residual)
-                  {
-                    const SymmetricTensor<2, 3> &previous =
-                      plastic_residual_previous[index];
-                    result.aitken_numerator +=
-                      (previous * (residual - previous)) * JxW;
-                    result.aitken_denominator +=
-                      squared(residual - previous) * JxW;
-                  }
-                plastic_residual[index] = residual;
-              }
-            plastic_strain[index] = updated;
-            result.norm2 += squared(updated) * JxW;
-            ++result.n_points;
-            if (yielded[index])
-              {
-                ++result.n_yielded;
-                result.yielded_measure += JxW;
-              }
-            result.max_equivalent =
-              std::max(result.max_equivalent,
-                       std::sqrt(2. / 3. * squared(updated)));
-          }
-      }
-    return result;
-  }
-
-
-
-  template <int dim>
-  void
-  Block<dim>::update_newton_point(const std::size_t              index,
-                                  const SymmetricTensor<2, dim> &strain,
-                                  const SymmetricTensor<2, 3>   &trial,
-                                  const SymmetricTensor<2, 3>   &stress,
-                                  const double                   JxW,
-                                  PlasticUpdate                 &result)
-  {
-    SymmetricTensor<2, dim> returned, trial_in_plane;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = i; j < dim; ++j)
-        {
-          returned[i][j]       = stress[i][j];
-          trial_in_plane[i][j] = trial[i][j];
-        }
-    // The residual: the returned stress against the one the linearisation
-    // at u_j predicted (an elastic tangent predicts the trial stress), in
-    // strain units like the initial-stress residual. A point elastic at
-    // both u_j and u_{j+1} has none.
-    if (linearisation.plastic[index] || yielded[index])
-      {
-        const SymmetricTensor<2, dim> predicted =
-          linearisation.plastic[index] ?
-            linearisation.stress[index] +
-              linearisation.tangent[index] *
-                (strain - linearisation.strain[index]) :
-            trial_in_plane;
-        result.change2 += squared(returned - predicted) /
-                          Utilities::fixed_power<2>(2. * material.mu()) * JxW;
-        tangent_is_stale = true;
-      }
-    linearisation.tangent[index] =
-      yielded[index] ? mohr_coulomb->tangent<dim>(trial) : elastic_tangent;
-    linearisation.plastic[index] = yielded[index];
-    linearisation.strain[index]  = strain;
-    linearisation.stress[index]  = returned;
-  }
-
-
-
-  template <int dim>
-  bool
-  Block<dim>::tangent_changed() const
-  {
-    return tangent_is_stale;
-  }
-
-
-
-  template <int dim>
-  bool
-  Block<dim>::suspend_newton(const bool suspend)
-  {
-    if (!newton)
-      return false;
-    newton_suspended = suspend;
-    if (!suspend)
-      return false;
-    // The elastic tangent everywhere: the load then carries D eps_p alone,
-    // as in the initial-stress method, and the residual below is measured
-    // as there (the change of the plastic strain).
-    for (std::size_t i = 0; i < linearisation.tangent.size(); ++i)
-      if (linearisation.plastic[i])
-        {
-          linearisation.tangent[i] = elastic_tangent;
-          linearisation.plastic[i] = false;
-        }
-    tangent_is_stale = assembled_plastic_tangent;
-    return assembled_plastic_tangent;
-  }
-
-
-
-  template <int dim>
-  void
-  Block<dim>::relax_plastic_strain(const double omega)
-  {
-    for (std::size_t i = 0; i < plastic_strain_load.size(); ++i)
-      plastic_strain_load[i] += omega * plastic_residual[i];
-    plastic_residual_previous = plastic_residual;
-    have_previous_residual    = true;
-  }
-
-
-
-  template <int dim>
-  void
-  Block<dim>::commit_plastic_strain()
-  {
-    plastic_strain_committed = plastic_strain;
-    plastic_strain_load      = plastic_strain;
-    have_previous_residual   = false;
-    if (newton)
-      linearisation_committed = linearisation;
-  }
-
-
-
-  template <int dim>
-  void
-  Block<dim>::restore_plastic_state()
-  {
-    if (!mohr_coulomb)
-      return;
-    plastic_strain         = plastic_strain_committed;
-    plastic_strain_load    = plastic_strain_committed;
-    have_previous_residual = false;
-    if (newton)
-      {
-        linearisation    = linearisation_committed;
-        tangent_is_stale = true;
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  Block<dim>::cell_plastic_fields(std::vector<SymmetricTensor<2, 3>> &stress,
-                                  std::vector<double> &yielded_fraction,
-                                  std::vector<double> &equivalent_strain) const
-  {
-    const unsigned int n_cells = triangulation.n_active_cells();
-    stress.clear();
-    yielded_fraction.assign(n_cells, 0.);
-    equivalent_strain.assign(n_cells, 0.);
-    if (!mohr_coulomb)
-      return;
-    const unsigned int n_q = n_plastic_points();
-    stress.reserve(std::size_t(n_cells) * n_q);
-    for (unsigned int c = 0; c < n_cells; ++c)
-      for (unsigned int q = 0; q < n_q; ++q)
-        {
-          stress.push_back(plastic_stress(c, q));
-          yielded_fraction[c] += (yielded[c * n_q + q] ? 1. : 0.) / n_q;
-          equivalent_strain[c] =
-            std::max(equivalent_strain[c],
-                     std::sqrt(2. / 3. * squared(plastic_strain[c * n_q + q])));
-        }
+    return plastic.enabled();
   }
 
 
@@ -538,7 +262,7 @@ namespace mbfem
     std::vector<double>                  div(n);
 
     matrix = 0.;
-    if (newton)
+    if (plastic.uses_newton())
       {
         // The consistent tangent at the points of the plastic state (the
         // same QGauss(p + 1)); not symmetric for non-associated flow.
@@ -546,7 +270,7 @@ namespace mbfem
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             const SymmetricTensor<4, dim> &C =
-              linearisation.tangent[cell_index * n_q + q];
+              plastic.tangent(cell_index * n_q + q);
             for (unsigned int i = 0; i < n; ++i)
               eps[i] = fe_values[displacement].symmetric_gradient(i, q);
             const double JxW = fe_values.JxW(q);
@@ -611,28 +335,7 @@ namespace mbfem
     stiffness = 0.;
     assemble_matrix(constraints, stiffness);
     stiffness.compress(VectorOperation::add);
-    tangent_is_stale = false;
-    assembled_plastic_tangent =
-      newton && std::find(linearisation.plastic.begin(),
-                          linearisation.plastic.end(),
-                          true) != linearisation.plastic.end();
-  }
-
-
-
-  template <int dim>
-  void
-  Block<dim>::assemble_unpinned_stiffness(SparsityPattern      &pattern,
-                                          SparseMatrix<double> &matrix) const
-  {
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    dsp,
-                                    physical_constraints,
-                                    false);
-    pattern.copy_from(dsp);
-    matrix.reinit(pattern);
-    assemble_matrix(physical_constraints, matrix);
+    plastic.tangent_assembled();
   }
 
 
@@ -648,7 +351,7 @@ namespace mbfem
 
   template <int dim>
   const Vector<double> &
-  Block<dim>::unpinned_load() const
+  Block<dim>::get_physical_load() const
   {
     return physical_load;
   }
@@ -680,181 +383,218 @@ namespace mbfem
   {
     boundary_conditions.set_time(time);
     make_constraints(boundary_conditions, floating.pins());
-    load          = 0.;
     external_load = 0.;
     physical_load = 0.;
 
-    const unsigned int                   n = fe.n_dofs_per_cell();
-    FEValues<dim>                        fe_values(mapping,
+    const unsigned int n = fe.n_dofs_per_cell();
+    FEValues<dim>      fe_values(mapping,
                             fe,
                             QGauss<dim>(fe.degree + 2),
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>                    fe_face_values(mapping,
+    FEFaceValues<dim>  fe_face_values(mapping,
                                      fe,
                                      QGauss<dim - 1>(fe.degree + 2),
                                      update_values | update_quadrature_points |
                                        update_normal_vectors |
                                        update_JxW_values);
-    FEValues<dim>                        stiffness_values(mapping,
-                                   fe,
-                                   state_quadrature(),
-                                   update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
-    FullMatrix<double>                   matrix(n, n);
-    Vector<double>                       cell_load(n);
-    std::vector<types::global_dof_index> dof_indices(n);
-    Vector<double>                       value(dim);
-
-    // Gravity acts in -y (2D) or -z (3D), scaled by the load history if
-    // 'Gravity ramp time' says so.
-    Tensor<1, dim> weight;
-    weight[dim - 1] =
-      -material.unit_weight * boundary_conditions.gravity_factor;
+    FEValues<dim>      state_values(mapping,
+                               fe,
+                               state_quadrature(),
+                               update_gradients | update_JxW_values);
+    Vector<double>     cell_load(n);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         fe_values.reinit(cell);
         cell_load = 0.;
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          {
-            boundary_conditions.body_force->vector_value(
-              fe_values.quadrature_point(q), value);
-            Tensor<1, dim> b = weight;
-            for (unsigned int d = 0; d < dim; ++d)
-              b[d] += value[d];
-            for (unsigned int i = 0; i < n; ++i)
-              cell_load(i) +=
-                fe_values[displacement].value(i, q) * b * fe_values.JxW(q);
-            // The initial stress: -int B^T sigma_0, which gravity and the
-            // boundaries balance in the geostatic state.
-            if (in_situ)
-              {
-                const SymmetricTensor<2, dim> sigma_0 =
-                  initial_stress(fe_values.quadrature_point(q));
-                for (unsigned int i = 0; i < n; ++i)
-                  cell_load(i) -=
-                    (fe_values[displacement].symmetric_gradient(i, q) *
-                     sigma_0) *
-                    fe_values.JxW(q);
-              }
-          }
-
-        // The plastic strain as a load, int B^T D eps_p, at the points of
-        // the plastic state.
-        if (mohr_coulomb)
-          {
-            stiffness_values.reinit(cell);
-            for (const unsigned int q :
-                 stiffness_values.quadrature_point_indices())
-              {
-                const SymmetricTensor<2, 3> s3 =
-                  plastic_stress(cell->active_cell_index(), q);
-                SymmetricTensor<2, dim> s;
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int j = i; j < dim; ++j)
-                    s[i][j] = s3[i][j];
-                // Newton: + (C_t - D) eps(u_j), the part of K_t u_j that
-                // the elastic stiffness does not give.
-                if (newton)
-                  {
-                    const std::size_t index =
-                      cell->active_cell_index() * n_plastic_points() + q;
-                    if (linearisation.plastic[index])
-                      s += (linearisation.tangent[index] - elastic_tangent) *
-                           linearisation.strain[index];
-                  }
-                for (unsigned int i = 0; i < n; ++i)
-                  cell_load(i) +=
-                    (stiffness_values[displacement].symmetric_gradient(i, q) *
-                     s) *
-                    stiffness_values.JxW(q);
-              }
-          }
-
-        // Far-field boundaries held by the in-situ stress, and the faces
-        // of an excavation with the support of the removed rock, released
-        // as t goes from 0 to 1.
+        add_volume_load(fe_values, boundary_conditions, cell_load);
+        if (plastic.enabled())
+          add_plastic_load(cell, state_values, cell_load);
         if (in_situ)
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary())
-              {
-                double factor = 0.;
-                if (in_situ->stress_boundaries.count(face->boundary_id()) == 1)
-                  factor = 1.;
-                else if (excavation != nullptr &&
-                         excavation->released_boundaries.count(
-                           face->boundary_id()) == 1)
-                  factor = 1. - Excavation::released(time);
-                if (factor == 0.)
-                  continue;
-                fe_face_values.reinit(cell, face);
-                for (const unsigned int q :
-                     fe_face_values.quadrature_point_indices())
-                  {
-                    const Tensor<1, dim> t =
-                      factor *
-                      (initial_stress(fe_face_values.quadrature_point(q)) *
-                       fe_face_values.normal_vector(q));
-                    for (unsigned int i = 0; i < n; ++i)
-                      cell_load(i) += fe_face_values[displacement].value(i, q) *
-                                      t * fe_face_values.JxW(q);
-                  }
-              }
+          add_in_situ_boundary_load(cell, time, fe_face_values, cell_load);
+        add_traction_load(cell, boundary_conditions, fe_face_values, cell_load);
+        distribute_cell_load(cell, cell_load, state_values);
+      }
 
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() &&
-              boundary_conditions.traction_boundaries.count(
-                face->boundary_id()) == 1)
-            {
-              fe_face_values.reinit(cell, face);
-              for (const unsigned int q :
-                   fe_face_values.quadrature_point_indices())
-                {
-                  boundary_conditions.traction->vector_value(
-                    fe_face_values.quadrature_point(q), value);
-                  Tensor<1, dim> t;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    t[d] = value[d];
-                  for (unsigned int i = 0; i < n; ++i)
-                    cell_load(i) += fe_face_values[displacement].value(i, q) *
-                                    t * fe_face_values.JxW(q);
-                }
-            }
+    // The pinned system's load is the physical one with nothing at the
+    // pins: distributing through the pins' empty constraint lines would
+    // give the same at every other DoF (they only drop what reaches a pin).
+    load = physical_load;
+    for (const auto i : floating.pins())
+      load(i) = 0.;
+  }
 
-        cell->get_dof_indices(dof_indices);
+
+
+  template <int dim>
+  void
+  Block<dim>::add_volume_load(
+    const FEValues<dim>           &fe_values,
+    const BoundaryConditions<dim> &boundary_conditions,
+    Vector<double>                &cell_load) const
+  {
+    const FEValuesExtractors::Vector displacement(0);
+    const unsigned int               n = fe.n_dofs_per_cell();
+    Vector<double>                   value(dim);
+    // Gravity acts in -y (2D) or -z (3D), scaled by the load history if
+    // 'Gravity ramp time' says so.
+    Tensor<1, dim> weight;
+    weight[dim - 1] =
+      -material.unit_weight * boundary_conditions.gravity_factor;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        boundary_conditions.body_force->vector_value(
+          fe_values.quadrature_point(q), value);
+        Tensor<1, dim> b = weight;
+        for (unsigned int d = 0; d < dim; ++d)
+          b[d] += value[d];
         for (unsigned int i = 0; i < n; ++i)
-          external_load(dof_indices[i]) += cell_load(i);
-
-        // The cell matrix is needed only where a prescribed displacement
-        // enters: it moves -K u_D to the right-hand side.
-        bool has_constrained_dof = false;
-        for (const auto i : dof_indices)
-          if (constraints.is_inhomogeneously_constrained(i))
-            has_constrained_dof = true;
-        if (has_constrained_dof)
+          cell_load(i) +=
+            fe_values[displacement].value(i, q) * b * fe_values.JxW(q);
+        // The initial stress: -int B^T sigma_0, which gravity and the
+        // boundaries balance in the geostatic state.
+        if (in_situ)
           {
-            stiffness_values.reinit(cell);
-            cell_matrix(stiffness_values, matrix, cell->active_cell_index());
-            constraints.distribute_local_to_global(cell_load,
-                                                   dof_indices,
-                                                   load,
-                                                   matrix);
-            physical_constraints.distribute_local_to_global(cell_load,
-                                                            dof_indices,
-                                                            physical_load,
-                                                            matrix);
-          }
-        else
-          {
-            constraints.distribute_local_to_global(cell_load,
-                                                   dof_indices,
-                                                   load);
-            physical_constraints.distribute_local_to_global(cell_load,
-                                                            dof_indices,
-                                                            physical_load);
+            const SymmetricTensor<2, dim> sigma_0 =
+              initial_stress(fe_values.quadrature_point(q));
+            for (unsigned int i = 0; i < n; ++i)
+              cell_load(i) -=
+                (fe_values[displacement].symmetric_gradient(i, q) * sigma_0) *
+                fe_values.JxW(q);
           }
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::add_plastic_load(const cell_iterator &cell,
+                               FEValues<dim>       &state_values,
+                               Vector<double>      &cell_load) const
+  {
+    // The plastic strain as a load, int B^T D eps_p, at the points of the
+    // plastic state.
+    const FEValuesExtractors::Vector displacement(0);
+    const unsigned int               n = fe.n_dofs_per_cell();
+    state_values.reinit(cell);
+    for (const unsigned int q : state_values.quadrature_point_indices())
+      {
+        const SymmetricTensor<2, dim> s =
+          plastic.load_stress(cell->active_cell_index(), q);
+        for (unsigned int i = 0; i < n; ++i)
+          cell_load(i) +=
+            (state_values[displacement].symmetric_gradient(i, q) * s) *
+            state_values.JxW(q);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::add_in_situ_boundary_load(const cell_iterator &cell,
+                                        const double         time,
+                                        FEFaceValues<dim>   &fe_face_values,
+                                        Vector<double>      &cell_load) const
+  {
+    // Far-field boundaries held by the in-situ stress, and the faces of an
+    // excavation with the support of the removed rock, released as t goes
+    // from 0 to 1.
+    const FEValuesExtractors::Vector displacement(0);
+    const unsigned int               n = fe.n_dofs_per_cell();
+    for (const auto &face : cell->face_iterators())
+      if (face->at_boundary())
+        {
+          double factor = 0.;
+          if (in_situ->stress_boundaries.count(face->boundary_id()) == 1)
+            factor = 1.;
+          else if (excavation != nullptr &&
+                   excavation->released_boundaries.count(face->boundary_id()) ==
+                     1)
+            factor = 1. - Excavation::released(time);
+          if (factor == 0.)
+            continue;
+          fe_face_values.reinit(cell, face);
+          for (const unsigned int q : fe_face_values.quadrature_point_indices())
+            {
+              const Tensor<1, dim> t =
+                factor * (initial_stress(fe_face_values.quadrature_point(q)) *
+                          fe_face_values.normal_vector(q));
+              for (unsigned int i = 0; i < n; ++i)
+                cell_load(i) += fe_face_values[displacement].value(i, q) * t *
+                                fe_face_values.JxW(q);
+            }
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::add_traction_load(
+    const cell_iterator           &cell,
+    const BoundaryConditions<dim> &boundary_conditions,
+    FEFaceValues<dim>             &fe_face_values,
+    Vector<double>                &cell_load) const
+  {
+    const FEValuesExtractors::Vector displacement(0);
+    const unsigned int               n = fe.n_dofs_per_cell();
+    Vector<double>                   value(dim);
+    for (const auto &face : cell->face_iterators())
+      if (face->at_boundary() && boundary_conditions.traction_boundaries.count(
+                                   face->boundary_id()) == 1)
+        {
+          fe_face_values.reinit(cell, face);
+          for (const unsigned int q : fe_face_values.quadrature_point_indices())
+            {
+              boundary_conditions.traction->vector_value(
+                fe_face_values.quadrature_point(q), value);
+              Tensor<1, dim> t;
+              for (unsigned int d = 0; d < dim; ++d)
+                t[d] = value[d];
+              for (unsigned int i = 0; i < n; ++i)
+                cell_load(i) += fe_face_values[displacement].value(i, q) * t *
+                                fe_face_values.JxW(q);
+            }
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::distribute_cell_load(const cell_iterator  &cell,
+                                   const Vector<double> &cell_load,
+                                   FEValues<dim>        &state_values)
+  {
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dof_indices(n);
+    cell->get_dof_indices(dof_indices);
+    for (unsigned int i = 0; i < n; ++i)
+      external_load(dof_indices[i]) += cell_load(i);
+
+    // The cell matrix is needed only where a prescribed displacement
+    // enters: it moves -K u_D to the right-hand side.
+    bool has_constrained_dof = false;
+    for (const auto i : dof_indices)
+      if (physical_constraints.is_inhomogeneously_constrained(i))
+        has_constrained_dof = true;
+    if (has_constrained_dof)
+      {
+        FullMatrix<double> matrix(n, n);
+        state_values.reinit(cell);
+        cell_matrix(state_values, matrix, cell->active_cell_index());
+        physical_constraints.distribute_local_to_global(cell_load,
+                                                        dof_indices,
+                                                        physical_load,
+                                                        matrix);
+      }
+    else
+      physical_constraints.distribute_local_to_global(cell_load,
+                                                      dof_indices,
+                                                      physical_load);
   }
 
 
@@ -902,7 +642,7 @@ namespace mbfem
       return contact_flexibility(stiffness,
                                  homogeneous_constraints,
                                  dofs,
-                                 !newton);
+                                 !plastic.uses_newton());
     const std::size_t      n = dof_handler.n_dofs();
     FullMatrix<double>     result(m, m);
     constexpr unsigned int chunk = 64; // right-hand sides per solve
@@ -1015,8 +755,8 @@ namespace mbfem
     SymmetricTensor<2, 3> sigma = material.stress_3d<dim>(strain);
     if (in_situ)
       sigma += in_situ->stress_3d(point);
-    if (mohr_coulomb)
-      sigma -= plastic_stress(cell, q);
+    if (plastic.enabled())
+      sigma -= plastic.plastic_stress(cell, q);
     return sigma;
   }
 
@@ -1033,4 +773,16 @@ namespace mbfem
 
   template class Block<2>;
   template class Block<3>;
+  template void
+  Block<2>::assemble_matrix(const AffineConstraints<double> &,
+                            TrilinosWrappers::SparseMatrix &) const;
+  template void
+  Block<2>::assemble_matrix(const AffineConstraints<double> &,
+                            SparseMatrix<double> &) const;
+  template void
+  Block<3>::assemble_matrix(const AffineConstraints<double> &,
+                            TrilinosWrappers::SparseMatrix &) const;
+  template void
+  Block<3>::assemble_matrix(const AffineConstraints<double> &,
+                            SparseMatrix<double> &) const;
 } // namespace mbfem

@@ -499,6 +499,48 @@ namespace mbfem
                             std::vector<double>  &violation,
                             double               &direction_change) const
   {
+    const CheckScales scales = check_scales(solution, displacement);
+    Trial             next   = trial;
+    violation.assign(n_pairs, 0.);
+    direction_change = 0.;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        if (std::all_of(held[k].begin(), held[k].end(), [](bool h) {
+              return h;
+            }))
+          continue;
+        if (contact_pairs[k].tied)
+          continue; // stays stuck
+        switch (trial.state[k])
+          {
+            case ContactState::stick:
+              check_stick(k, trial, solution, scales, next, violation[k]);
+              break;
+            case ContactState::slip:
+              check_slip(k,
+                         trial,
+                         solution,
+                         displacement,
+                         scales,
+                         next,
+                         violation[k],
+                         direction_change);
+              break;
+            case ContactState::open:
+              check_open(k, displacement, scales, next, violation[k]);
+              break;
+          }
+      }
+    return next;
+  }
+
+
+
+  template <int dim>
+  typename ContactSolver<dim>::CheckScales
+  ContactSolver<dim>::check_scales(const Vector<double> &solution,
+                                   const Vector<double> &displacement) const
+  {
     const unsigned int n_r = n_pairs * dim;
 
     // Scales of the tolerances: what both formulations know (not Delta_F,
@@ -514,113 +556,144 @@ namespace mbfem
       force_scale = std::max(force_scale, std::abs(f));
     for (const auto &pair : contact_pairs)
       displacement_scale = std::max(displacement_scale, pair.initial_gap);
-    const double force_tolerance        = 1e-9 * force_scale;
-    const double displacement_tolerance = 1e-9 * displacement_scale;
+    CheckScales scales;
+    scales.force                  = force_scale;
+    scales.displacement           = displacement_scale;
+    scales.force_tolerance        = 1e-9 * force_scale;
+    scales.displacement_tolerance = 1e-9 * displacement_scale;
+    return scales;
+  }
 
-    Trial next = trial;
-    violation.assign(n_pairs, 0.);
-    direction_change = 0.;
-    for (unsigned int k = 0; k < n_pairs; ++k)
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::break_open(const unsigned int k,
+                                 const Trial       &trial,
+                                 const double       r_n,
+                                 const CheckScales &scales,
+                                 Trial             &next,
+                                 double            &violation) const
+  {
+    const auto  &pair = contact_pairs[k];
+    const double tension_limit =
+      pair.joint.tensile_limit(pair.area, trial.broken[k]);
+    next.state[k] = ContactState::open;
+    if (!trial.broken[k] && pair.joint.has_strength())
+      next.broken[k] = true;
+    next.tensile_slip[k] = false;
+    violation            = (-tension_limit - r_n) / scales.force;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::check_stick(const unsigned int    k,
+                                  const Trial          &trial,
+                                  const Vector<double> &solution,
+                                  const CheckScales    &scales,
+                                  Trial                &next,
+                                  double               &violation) const
+  {
+    const auto  &pair = contact_pairs[k];
+    const double tension_limit =
+      pair.joint.tensile_limit(pair.area, trial.broken[k]);
+    const double   r_n = solution(k * dim);
+    Tensor<1, dim> r_t;
+    for (unsigned int d = 1; d < dim; ++d)
+      r_t[d] = solution(k * dim + d);
+    const double limit =
+      pair.joint.shear_strength(r_n, pair.area, trial.broken[k]);
+    if (r_n < -tension_limit - scales.force_tolerance)
+      break_open(k, trial, r_n, scales, next, violation);
+    else if (r_t.norm() > limit + scales.force_tolerance)
       {
-        if (std::all_of(held[k].begin(), held[k].end(), [](bool h) {
-              return h;
-            }))
-          continue;
-        const auto &pair = contact_pairs[k];
-        if (pair.tied)
-          continue; // stays stuck
-        const double tension_limit =
-          pair.joint.tensile_limit(pair.area, trial.broken[k]);
-        const double   r_n = solution(k * dim);
-        Tensor<1, dim> r_t, d_t, increment_t;
-        for (unsigned int d = 1; d < dim; ++d)
-          {
-            r_t[d]         = solution(k * dim + d);
-            d_t[d]         = displacement(k * dim + d);
-            increment_t[d] = d_t[d] - committed_displacement[k][d];
-          }
-        const auto break_open = [&]() {
-          next.state[k] = ContactState::open;
-          if (!trial.broken[k] && pair.joint.has_strength())
-            next.broken[k] = true;
-          next.tensile_slip[k] = false;
-          violation[k]         = (-tension_limit - r_n) / force_scale;
-        };
+        next.state[k]               = ContactState::slip;
+        next.slip_direction[k]      = -r_t / r_t.norm();
+        next.direction_stiffness[k] = 0.;
+        next.tensile_slip[k]        = r_n < 0.;
+        violation                   = (r_t.norm() - limit) / scales.force;
+      }
+  }
 
-        switch (trial.state[k])
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::check_slip(const unsigned int    k,
+                                 const Trial          &trial,
+                                 const Vector<double> &solution,
+                                 const Vector<double> &displacement,
+                                 const CheckScales    &scales,
+                                 Trial                &next,
+                                 double               &violation,
+                                 double               &direction_change) const
+  {
+    const auto  &pair = contact_pairs[k];
+    const double tension_limit =
+      pair.joint.tensile_limit(pair.area, trial.broken[k]);
+    const double   r_n = solution(k * dim);
+    Tensor<1, dim> d_t, increment_t;
+    for (unsigned int d = 1; d < dim; ++d)
+      {
+        d_t[d]         = displacement(k * dim + d);
+        increment_t[d] = d_t[d] - committed_displacement[k][d];
+      }
+    const double along = increment_t * trial.slip_direction[k];
+    // A slip increment against the assumed direction (2D: a reversed sign;
+    // 3D: more than 90 degrees off) or none at all means the pair sticks.
+    const bool sticks =
+      along < -scales.displacement_tolerance ||
+      (dim == 3 && increment_t.norm() < scales.displacement_tolerance);
+    if (r_n < -tension_limit - scales.force_tolerance)
+      break_open(k, trial, r_n, scales, next, violation);
+    else if (sticks)
+      {
+        next.state[k] = ContactState::stick;
+        violation     = std::abs(along) / scales.displacement;
+      }
+    else
+      {
+        if (dim == 3)
           {
-            case ContactState::stick:
-              {
-                const double limit =
-                  pair.joint.shear_strength(r_n, pair.area, trial.broken[k]);
-                if (r_n < -tension_limit - force_tolerance)
-                  break_open();
-                else if (r_t.norm() > limit + force_tolerance)
-                  {
-                    next.state[k]               = ContactState::slip;
-                    next.slip_direction[k]      = -r_t / r_t.norm();
-                    next.direction_stiffness[k] = 0.;
-                    next.tensile_slip[k]        = r_n < 0.;
-                    violation[k] = (r_t.norm() - limit) / force_scale;
-                  }
-                break;
-              }
-            case ContactState::slip:
-              {
-                const double along = increment_t * trial.slip_direction[k];
-                // A slip increment against the assumed direction (2D: a
-                // reversed sign; 3D: more than 90 degrees off) or none at
-                // all means the pair sticks.
-                const bool sticks =
-                  along < -displacement_tolerance ||
-                  (dim == 3 && increment_t.norm() < displacement_tolerance);
-                if (r_n < -tension_limit - force_tolerance)
-                  break_open();
-                else if (sticks)
-                  {
-                    next.state[k] = ContactState::stick;
-                    violation[k]  = std::abs(along) / displacement_scale;
-                  }
-                else
-                  {
-                    if (dim == 3)
-                      {
-                        // Next Newton step about this slip increment.
-                        const Tensor<1, dim> s =
-                          increment_t / increment_t.norm();
-                        direction_change =
-                          std::max(direction_change,
-                                   (s - trial.slip_direction[k]).norm());
-                        next.slip_direction[k] = s;
-                        next.direction_stiffness[k] =
-                          pair.joint.shear_strength(r_n,
-                                                    pair.area,
-                                                    trial.broken[k],
-                                                    trial.tensile_slip[k]) /
-                          increment_t.norm();
-                      }
-                    const bool tensile = r_n < -force_tolerance;
-                    if (tensile != trial.tensile_slip[k])
-                      {
-                        next.tensile_slip[k] = tensile;
-                        violation[k]         = std::abs(r_n) / force_scale;
-                      }
-                  }
-                break;
-              }
-            case ContactState::open:
-              {
-                const double gap = pair.initial_gap + displacement(k * dim);
-                if (gap < -displacement_tolerance)
-                  {
-                    next.state[k] = ContactState::stick;
-                    violation[k]  = -gap / displacement_scale;
-                  }
-                break;
-              }
+            // Next Newton step about this slip increment.
+            const Tensor<1, dim> s = increment_t / increment_t.norm();
+            direction_change =
+              std::max(direction_change, (s - trial.slip_direction[k]).norm());
+            next.slip_direction[k] = s;
+            next.direction_stiffness[k] =
+              pair.joint.shear_strength(r_n,
+                                        pair.area,
+                                        trial.broken[k],
+                                        trial.tensile_slip[k]) /
+              increment_t.norm();
+          }
+        const bool tensile = r_n < -scales.force_tolerance;
+        if (tensile != trial.tensile_slip[k])
+          {
+            next.tensile_slip[k] = tensile;
+            violation            = std::abs(r_n) / scales.force;
           }
       }
-    return next;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::check_open(const unsigned int    k,
+                                 const Vector<double> &displacement,
+                                 const CheckScales    &scales,
+                                 Trial                &next,
+                                 double               &violation) const
+  {
+    const double gap = contact_pairs[k].initial_gap + displacement(k * dim);
+    if (gap < -scales.displacement_tolerance)
+      {
+        next.state[k] = ContactState::stick;
+        violation     = -gap / scales.displacement;
+      }
   }
 
 

@@ -1,6 +1,7 @@
 #include <mbfem/base/exceptions.h>
 #include <mbfem/contact/monolithic_system.h>
 
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <cmath>
@@ -9,6 +10,35 @@
 
 namespace mbfem
 {
+  namespace
+  {
+    /**
+     * A block's stiffness under its physical constraints alone, without
+     * pins, so singular for a floating block (its free modes are held by
+     * the contact multipliers of the whole system instead). Constrained
+     * rows keep a diagonal entry.
+     */
+    template <int dim>
+    void
+    unpinned_stiffness(const Block<dim>     &block,
+                       SparsityPattern      &pattern,
+                       SparseMatrix<double> &matrix)
+    {
+      const AffineConstraints<double> &constraints =
+        block.get_physical_constraints();
+      DynamicSparsityPattern dsp(block.n_dofs());
+      DoFTools::make_sparsity_pattern(block.dof_handler,
+                                      dsp,
+                                      constraints,
+                                      false);
+      pattern.copy_from(dsp);
+      matrix.reinit(pattern);
+      block.assemble_matrix(constraints, matrix);
+    }
+  } // namespace
+
+
+
   template <int dim>
   MonolithicSystem<dim>::MonolithicSystem(const std::string &solver_package)
     : solver(solver_package)
@@ -23,17 +53,33 @@ namespace mbfem
     const std::vector<ContactPair<dim>>            &contact_pairs)
   {
     pairs = contact_pairs;
-    offset.assign(blocks.size(), 0);
-    n_displacements = 0;
     std::vector<SparsityPattern>      patterns(blocks.size());
     std::vector<SparseMatrix<double>> stiffness(blocks.size());
-    double                            trace  = 0.;
-    unsigned int                      n_free = 0;
+    assemble_blocks(blocks, patterns, stiffness);
+    make_relative_displacements(blocks, true);
+    make_pattern(patterns);
+    add_fixed_entries(stiffness);
+    load.reinit(n_displacements);
+  }
+
+
+
+  template <int dim>
+  void
+  MonolithicSystem<dim>::assemble_blocks(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+    std::vector<SparsityPattern>                   &patterns,
+    std::vector<SparseMatrix<double>>              &stiffness)
+  {
+    offset.assign(blocks.size(), 0);
+    n_displacements     = 0;
+    double       trace  = 0.;
+    unsigned int n_free = 0;
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
         offset[b] = n_displacements;
         n_displacements += blocks[b]->n_dofs();
-        blocks[b]->assemble_unpinned_stiffness(patterns[b], stiffness[b]);
+        unpinned_stiffness(*blocks[b], patterns[b], stiffness[b]);
         const auto &constraints = blocks[b]->get_physical_constraints();
         for (types::global_dof_index i = 0; i < blocks[b]->n_dofs(); ++i)
           if (!constraints.is_constrained(i))
@@ -43,15 +89,21 @@ namespace mbfem
             }
       }
     stiffness_scale = (n_free > 0 && trace > 0. ? trace / n_free : 1.);
+  }
 
-    make_relative_displacements(blocks, true);
 
+
+  template <int dim>
+  void
+  MonolithicSystem<dim>::make_pattern(
+    const std::vector<SparsityPattern> &patterns)
+  {
     // The pattern: the blocks' stiffnesses on the diagonal; each pair's
     // dim rows couple to every displacement its d depends on and to its own
     // dim forces (a slip row mixes the pair's components); G^T mirrors them.
     const types::global_dof_index n_rows = size();
     DynamicSparsityPattern        dsp(n_rows);
-    for (unsigned int b = 0; b < blocks.size(); ++b)
+    for (unsigned int b = 0; b < patterns.size(); ++b)
       for (auto entry = patterns[b].begin(); entry != patterns[b].end();
            ++entry)
         dsp.add(offset[b] + entry->row(), offset[b] + entry->column());
@@ -76,13 +128,21 @@ namespace mbfem
                   complete_index_set(n_rows),
                   dsp,
                   MPI_COMM_SELF);
+  }
 
+
+
+  template <int dim>
+  void
+  MonolithicSystem<dim>::add_fixed_entries(
+    const std::vector<SparseMatrix<double>> &stiffness)
+  {
     // What does not change with the states: K, and -G^T in the
     // displacement rows (K u - G^T rho = f, rho = ks y). solve() rewrites
     // only the pairs' rows.
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
-    for (unsigned int b = 0; b < blocks.size(); ++b)
+    for (unsigned int b = 0; b < stiffness.size(); ++b)
       for (types::global_dof_index i = 0; i < stiffness[b].m(); ++i)
         {
           columns.clear();
@@ -104,7 +164,6 @@ namespace mbfem
                    n_displacements + r,
                    -stiffness_scale * term.coefficient);
     matrix.compress(VectorOperation::add);
-    load.reinit(n_displacements);
   }
 
 
@@ -177,7 +236,7 @@ namespace mbfem
   {
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
-        const Vector<double> &f = blocks[b]->unpinned_load();
+        const Vector<double> &f = blocks[b]->get_physical_load();
         for (types::global_dof_index i = 0; i < f.size(); ++i)
           load(offset[b] + i) = f(i);
       }

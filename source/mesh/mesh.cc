@@ -395,97 +395,156 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /**
+     * The cells, boundary faces and vertices of one block as they are
+     * collected from the whole mesh, for Triangulation::create_triangulation.
+     */
+    template <int dim>
+    struct BlockMeshData
+    {
+      explicit BlockMeshData(const Triangulation<dim> &mesh)
+        : mesh(mesh)
+      {}
+
+      /** The block's number of the mesh's vertex @p global (added once). */
+      unsigned int
+      number(const unsigned int global)
+      {
+        const auto [it, inserted] =
+          vertex_number.emplace(global, vertices.size());
+        if (inserted)
+          vertices.push_back(mesh.get_vertices()[global]);
+        return it->second;
+      }
+
+      const Triangulation<dim>            &mesh;
+      std::map<unsigned int, unsigned int> vertex_number;
+      std::vector<Point<dim>>              vertices;
+      std::vector<CellData<dim>>           cells;
+      SubCellData                          faces;
+      std::set<unsigned int>               interior_faces;
+    };
+
+
+
+    /**
+     * The boundary id face @p f of @p cell (of block @p id) gets in the
+     * block, or false if the block need not list the face.
+     */
+    template <int dim>
+    bool
+    block_face_id(const typename Triangulation<dim>::active_cell_iterator &cell,
+                  const unsigned int                                       f,
+                  const types::material_id                                 id,
+                  std::set<unsigned int> &interior_faces,
+                  types::boundary_id     &boundary_id)
+    {
+      const auto face = cell->face(f);
+      if (face->at_boundary())
+        boundary_id = face->boundary_id();
+      else if (cell->neighbor(f)->material_id() != id)
+        boundary_id = interface_boundary_id(cell->neighbor(f)->material_id());
+      else if (face->manifold_id() != numbers::flat_manifold_id &&
+               interior_faces.insert(face->index()).second)
+        // An interior face keeps its manifold: without it, it would be
+        // flat in the block while its cells are curved, and MappingQ(p >=
+        // 2) in 3D gives a wrong geometry.
+        boundary_id = numbers::internal_face_boundary_id;
+      else
+        return false;
+      return true;
+    }
+
+
+
+    /** Adds @p face with @p boundary_id, and in 3D its curved edges. */
+    template <int dim, typename FaceIterator>
+    void
+    add_block_face(const FaceIterator      &face,
+                   const types::boundary_id boundary_id,
+                   BlockMeshData<dim>      &data)
+    {
+      CellData<dim - 1> face_data(face->n_vertices());
+      for (const unsigned int v : face->vertex_indices())
+        face_data.vertices[v] = data.number(face->vertex_index(v));
+      face_data.boundary_id = boundary_id;
+      face_data.manifold_id = face->manifold_id();
+      if constexpr (dim == 2)
+        data.faces.boundary_lines.push_back(face_data);
+      else
+        {
+          data.faces.boundary_quads.push_back(face_data);
+          // Edges of curved faces need their manifold too.
+          for (const unsigned int l : face->line_indices())
+            if (face->line(l)->manifold_id() != numbers::flat_manifold_id)
+              {
+                CellData<1> line(2);
+                line.vertices[0] = data.number(face->line(l)->vertex_index(0));
+                line.vertices[1] = data.number(face->line(l)->vertex_index(1));
+                line.boundary_id = numbers::internal_face_boundary_id;
+                line.manifold_id = face->line(l)->manifold_id();
+                data.faces.boundary_lines.push_back(line);
+              }
+        }
+    }
+
+
+
+    /**
+     * Every manifold the block's cells, faces and edges refer to (the
+     * triangulation's own list may omit ids that only faces carry, and an
+     * id without its manifold crashes MappingQ in a Release build).
+     */
+    template <int dim>
+    void
+    copy_manifolds(const BlockMeshData<dim> &data, Triangulation<dim> &block)
+    {
+      std::set<types::manifold_id> used;
+      for (const auto &cell : data.cells)
+        used.insert(cell.manifold_id);
+      for (const auto &face : data.faces.boundary_lines)
+        used.insert(face.manifold_id);
+      for (const auto &face : data.faces.boundary_quads)
+        used.insert(face.manifold_id);
+      for (const auto manifold : used)
+        if (manifold != numbers::flat_manifold_id)
+          block.set_manifold(manifold, data.mesh.get_manifold(manifold));
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   extract_block(const Triangulation<dim> &mesh,
                 const types::material_id  id,
                 Triangulation<dim>       &block)
   {
-    std::map<unsigned int, unsigned int> vertex_number;
-    std::vector<Point<dim>>              vertices;
-    std::vector<CellData<dim>>           cells;
-    SubCellData                          faces;
-    std::set<unsigned int>               interior_faces;
-
-    const auto number = [&](const unsigned int global) {
-      const auto [it, inserted] =
-        vertex_number.emplace(global, vertices.size());
-      if (inserted)
-        vertices.push_back(mesh.get_vertices()[global]);
-      return it->second;
-    };
-
+    BlockMeshData<dim> data(mesh);
     for (const auto &cell : mesh.active_cell_iterators())
       if (cell->material_id() == id)
         {
-          CellData<dim> data(cell->n_vertices());
+          CellData<dim> cell_data(cell->n_vertices());
           for (const unsigned int v : cell->vertex_indices())
-            data.vertices[v] = number(cell->vertex_index(v));
-          data.material_id = id;
-          data.manifold_id = cell->manifold_id();
-          cells.push_back(data);
+            cell_data.vertices[v] = data.number(cell->vertex_index(v));
+          cell_data.material_id = id;
+          cell_data.manifold_id = cell->manifold_id();
+          data.cells.push_back(cell_data);
 
           for (const unsigned int f : cell->face_indices())
             {
-              const auto         face = cell->face(f);
               types::boundary_id boundary_id;
-              if (face->at_boundary())
-                boundary_id = face->boundary_id();
-              else if (cell->neighbor(f)->material_id() != id)
-                boundary_id =
-                  interface_boundary_id(cell->neighbor(f)->material_id());
-              else if (face->manifold_id() != numbers::flat_manifold_id &&
-                       interior_faces.insert(face->index()).second)
-                // An interior face keeps its manifold: without it, it
-                // would be flat in the block while its cells are curved,
-                // and MappingQ(p >= 2) in 3D gives a wrong geometry.
-                boundary_id = numbers::internal_face_boundary_id;
-              else
-                continue;
-
-              CellData<dim - 1> face_data(face->n_vertices());
-              for (const unsigned int v : face->vertex_indices())
-                face_data.vertices[v] = number(face->vertex_index(v));
-              face_data.boundary_id = boundary_id;
-              face_data.manifold_id = face->manifold_id();
-              if constexpr (dim == 2)
-                faces.boundary_lines.push_back(face_data);
-              else
-                {
-                  faces.boundary_quads.push_back(face_data);
-                  // Edges of curved faces need their manifold too.
-                  for (const unsigned int l : face->line_indices())
-                    if (face->line(l)->manifold_id() !=
-                        numbers::flat_manifold_id)
-                      {
-                        CellData<1> line(2);
-                        line.vertices[0] =
-                          number(face->line(l)->vertex_index(0));
-                        line.vertices[1] =
-                          number(face->line(l)->vertex_index(1));
-                        line.boundary_id = numbers::internal_face_boundary_id;
-                        line.manifold_id = face->line(l)->manifold_id();
-                        faces.boundary_lines.push_back(line);
-                      }
-                }
+              if (block_face_id<dim>(
+                    cell, f, id, data.interior_faces, boundary_id))
+                add_block_face(cell->face(f), boundary_id, data);
             }
         }
 
     block.clear();
-    block.create_triangulation(vertices, cells, faces);
-    // Every manifold the block's cells, faces and edges refer to (the
-    // triangulation's own list may omit ids that only faces carry, and an
-    // id without its manifold crashes MappingQ in a Release build).
-    std::set<types::manifold_id> used;
-    for (const auto &data : cells)
-      used.insert(data.manifold_id);
-    for (const auto &data : faces.boundary_lines)
-      used.insert(data.manifold_id);
-    for (const auto &data : faces.boundary_quads)
-      used.insert(data.manifold_id);
-    for (const auto manifold : used)
-      if (manifold != numbers::flat_manifold_id)
-        block.set_manifold(manifold, mesh.get_manifold(manifold));
+    block.create_triangulation(data.vertices, data.cells, data.faces);
+    copy_manifolds(data, block);
   }
 
 

@@ -237,7 +237,10 @@ namespace mbfem
                              interpretation);
     std::vector<SymmetricTensor<2, 3>> plastic_stress;
     std::vector<double>                yielded, plastic_strain;
-    block.cell_plastic_fields(plastic_stress, yielded, plastic_strain);
+    block.plastic_state().cell_fields(block.triangulation.n_active_cells(),
+                                      plastic_stress,
+                                      yielded,
+                                      plastic_strain);
     const StressPostprocessor<dim> stress(block.material,
                                           block.get_in_situ_stress(),
                                           plastic_stress,

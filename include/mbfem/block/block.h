@@ -6,6 +6,7 @@
 #include <mbfem/linear_algebra/direct_solver.h>
 #include <mbfem/material/in_situ_stress.h>
 #include <mbfem/material/material.h>
+#include <mbfem/material/plastic_state.h>
 #include <mbfem/material/plasticity.h>
 
 #include <deal.II/base/function.h>
@@ -41,30 +42,6 @@ namespace mbfem
 
     unsigned int degree         = 2;
     unsigned int mapping_degree = 2;
-  };
-
-  /** What one plastic update of a block found. */
-  struct PlasticUpdate
-  {
-    /**
-     * Squared L2 norms of the residual r = F(x) - x of the fixed-point map
-     * (x the plastic strain in the load, F(x) the one the return mapping
-     * gives back) and of F(x).
-     */
-    double change2 = 0.;
-    double norm2   = 0.;
-    /** r_prev . (r - r_prev) and |r - r_prev|^2, for Aitken's relaxation. */
-    double       aitken_numerator   = 0.;
-    double       aitken_denominator = 0.;
-    unsigned int n_yielded          = 0;
-    unsigned int n_points           = 0;
-    /** Area (2D) or volume (3D) of the yielded quadrature points. */
-    double yielded_measure = 0.;
-    /** Largest sqrt(2/3 eps_p : eps_p). */
-    double max_equivalent = 0.;
-
-    PlasticUpdate &
-    operator+=(const PlasticUpdate &other);
   };
 
   /**
@@ -116,73 +93,20 @@ namespace mbfem
     get_in_situ_stress() const;
 
     /**
-     * Makes the block elastic-perfectly plastic (Mohr-Coulomb) if
-     * @p parameters are enabled; after the triangulation is filled.
+     * The plastic and Newton state of the block (disabled for an elastic
+     * block); the driver updates, relaxes, commits and restores it, the
+     * block asks it at assembly. PlasticState::initialize() once the
+     * triangulation is filled.
      */
-    void
-    set_plasticity(const PlasticityParameters &parameters);
+    PlasticState<dim> &
+    plastic_state();
 
+    const PlasticState<dim> &
+    plastic_state() const;
+
+    /** Whether the block is elastic-perfectly plastic. */
     bool
     is_plastic() const;
-
-    /**
-     * The return mapping at every quadrature point, from the current
-     * solution and the plastic strain of the last converged increment; the
-     * result becomes the plastic strain that the next assemble_load() puts
-     * into the load (int B^T D eps_p).
-     */
-    PlasticUpdate
-    update_plastic_strain();
-
-    /**
-     * Moves the plastic strain in the load by @p omega times the residual
-     * of the last update_plastic_strain() (omega = 1: plain fixed point).
-     */
-    void
-    relax_plastic_strain(const double omega);
-
-    /**
-     * Newton's method (Plasticity/Method): whether the tangent stiffness
-     * differs from the one last assembled, so that the block must be
-     * reassembled and refactorised and its flexibility recomputed before
-     * the next pass. Always false for the initial-stress method.
-     */
-    bool
-    tangent_changed() const;
-
-    /**
-     * Newton's method: with a perfectly plastic tangent, yielded rock and
-     * slipping pairs can form a mechanism, and the tangent system is
-     * singular although the elastic one is not. @p suspend = true puts the
-     * elastic stiffness back and makes update_plastic_strain() do
-     * initial-stress iterations for the rest of the step; false (at the
-     * start of every step) resumes Newton. Returns whether the stiffness
-     * last assembled had a plastic tangent, i.e. whether suspending changes
-     * anything.
-     */
-    bool
-    suspend_newton(const bool suspend);
-
-    /** Accepts the plastic strain of the converged increment. */
-    void
-    commit_plastic_strain();
-
-    /**
-     * Goes back to the plastic state of the last commit (a failed increment
-     * is retried in smaller steps).
-     */
-    void
-    restore_plastic_state();
-
-    /**
-     * D eps_p at every quadrature point (cell-major, for the stresses at
-     * output points), and per active cell the fraction of its points
-     * yielded and the largest equivalent plastic strain.
-     */
-    void
-    cell_plastic_fields(std::vector<SymmetricTensor<2, 3>> &plastic_stress,
-                        std::vector<double>                &yielded,
-                        std::vector<double> &equivalent_strain) const;
 
     void
     assemble_stiffness();
@@ -267,23 +191,25 @@ namespace mbfem
     get_physical_constraints() const;
 
     /**
-     * For the monolithic reference formulation: the stiffness under the
-     * physical constraints alone, without pins, so singular for a floating
-     * block (its free modes are held by the contact multipliers of the
-     * whole system instead). Constrained rows keep a diagonal entry.
-     */
-    void
-    assemble_unpinned_stiffness(SparsityPattern      &pattern,
-                                SparseMatrix<double> &matrix) const;
-
-    /**
-     * The external load of the last assemble_load() condensed with the
-     * physical constraints alone (the lifting of the prescribed
-     * displacements included), the right-hand side that goes with
-     * assemble_unpinned_stiffness().
+     * The load of the last assemble_load() under the physical constraints
+     * alone (the lifting of the prescribed displacements included, no
+     * pins): the right-hand side of the block in the monolithic system.
+     * The point forces of add_point_forces() are not in it.
      */
     const Vector<double> &
-    unpinned_load() const;
+    get_physical_load() const;
+
+    /**
+     * Adds the stiffness (the tangent one with Newton's method), through
+     * @p constraints, to @p matrix: the block's own pinned stiffness, or
+     * with the physical constraints alone that of the monolithic system.
+     * Instantiated for TrilinosWrappers::SparseMatrix and
+     * SparseMatrix<double>.
+     */
+    template <typename MatrixType>
+    void
+    assemble_matrix(const AffineConstraints<double> &constraints,
+                    MatrixType                      &matrix) const;
 
     /**
      * The quadrature of the block's stress state: QGauss(p + 1). The
@@ -335,25 +261,6 @@ namespace mbfem
                 const unsigned int   cell_index) const;
 
     /**
-     * Newton's method at one point of the plastic state: the residual of
-     * the linearisation into @p result, and the new tangent and
-     * linearisation point.
-     */
-    void
-    update_newton_point(const std::size_t              index,
-                        const SymmetricTensor<2, dim> &strain,
-                        const SymmetricTensor<2, 3>   &trial,
-                        const SymmetricTensor<2, 3>   &stress,
-                        const double                   JxW,
-                        PlasticUpdate                 &result);
-
-    /** Adds the stiffness, through @p constraints, to @p matrix. */
-    template <typename MatrixType>
-    void
-    assemble_matrix(const AffineConstraints<double> &constraints,
-                    MatrixType                      &matrix) const;
-
-    /**
      * Physical constraints (hanging nodes, prescribed displacements with
      * their values at the functions' current time, point supports, platens)
      * and then @p pins.
@@ -366,49 +273,54 @@ namespace mbfem
     SymmetricTensor<2, dim>
     initial_stress(const Point<dim> &point) const;
 
-    /** The quadrature of the plastic state: QGauss(p + 1). */
-    unsigned int
-    n_plastic_points() const;
+    using cell_iterator = typename DoFHandler<dim>::active_cell_iterator;
 
-    /** D eps_p (3x3) at quadrature point @p q of cell @p cell. */
-    SymmetricTensor<2, 3>
-    plastic_stress(const unsigned int cell, const unsigned int q) const;
-
-    std::unique_ptr<MohrCoulomb>       mohr_coulomb;
-    std::vector<SymmetricTensor<2, 3>> plastic_strain_committed;
-    std::vector<SymmetricTensor<2, 3>> plastic_strain;      // F(x)
-    std::vector<SymmetricTensor<2, 3>> plastic_strain_load; // x
-    std::vector<SymmetricTensor<2, 3>> plastic_residual;
-    std::vector<SymmetricTensor<2, 3>> plastic_residual_previous;
-    bool                               have_previous_residual = false;
-    std::vector<bool>                  yielded;
     /**
-     * Newton's method: at every point of the plastic state the consistent
-     * tangent, whether it is a plastic one, and the strain and (in-plane)
-     * stress it was taken at, the linearisation point u_j. The load then
-     * carries int B^T (C_t - D) eps(u_j), so that the block's solve is
-     * K_t u_{j+1} = f - f_int(u_j) + K_t u_j and keeps the form (and the
-     * contact flexibility) of the elastic one.
+     * The steps of assemble_load(), one cell each, adding to @p cell_load:
+     * gravity, the body force and the in-situ stress -int B^T sigma_0 in
+     * the cell (@p fe_values reinit'ed on it)...
      */
-    struct Linearisation
-    {
-      std::vector<SymmetricTensor<4, dim>> tangent;
-      std::vector<bool>                    plastic;
-      std::vector<SymmetricTensor<2, dim>> strain;
-      std::vector<SymmetricTensor<2, dim>> stress;
-    };
-    bool                    newton = false;
-    SymmetricTensor<4, dim> elastic_tangent;
-    Linearisation           linearisation;
-    /** The linearisation at the last commit, for restore_plastic_state(). */
-    Linearisation linearisation_committed;
-    bool          tangent_is_stale = false;
-    /** Whether the stiffness last assembled used a plastic tangent. */
-    bool assembled_plastic_tangent = false;
-    /** Initial-stress iterations for the rest of the step (suspend_newton). */
-    bool                           newton_suspended = false;
-    const InSituStress            *in_situ          = nullptr;
-    const Excavation              *excavation       = nullptr;
+    void
+    add_volume_load(const FEValues<dim>           &fe_values,
+                    const BoundaryConditions<dim> &boundary_conditions,
+                    Vector<double>                &cell_load) const;
+
+    /** ... int B^T s of the plastic state (PlasticState::load_stress())... */
+    void
+    add_plastic_load(const cell_iterator &cell,
+                     FEValues<dim>       &state_values,
+                     Vector<double>      &cell_load) const;
+
+    /**
+     * ... the in-situ stress on far-field boundaries and on the faces of an
+     * excavation, released as @p time goes from 0 to 1...
+     */
+    void
+    add_in_situ_boundary_load(const cell_iterator &cell,
+                              const double         time,
+                              FEFaceValues<dim>   &fe_face_values,
+                              Vector<double>      &cell_load) const;
+
+    /** ... and the tractions. */
+    void
+    add_traction_load(const cell_iterator           &cell,
+                      const BoundaryConditions<dim> &boundary_conditions,
+                      FEFaceValues<dim>             &fe_face_values,
+                      Vector<double>                &cell_load) const;
+
+    /**
+     * Adds @p cell_load to the external load and, through the physical
+     * constraints, to the physical load, with the lifting -K u_D where the
+     * cell has a prescribed displacement.
+     */
+    void
+    distribute_cell_load(const cell_iterator  &cell,
+                         const Vector<double> &cell_load,
+                         FEValues<dim>        &state_values);
+
+    PlasticState<dim>              plastic;
+    const InSituStress            *in_situ    = nullptr;
+    const Excavation              *excavation = nullptr;
     AffineConstraints<double>      physical_constraints;
     AffineConstraints<double>      constraints;
     AffineConstraints<double>      homogeneous_constraints;

@@ -255,6 +255,67 @@ namespace mbfem
           double               &direction_change) const;
 
     /**
+     * The scales of check()'s tolerances and violations, from what both
+     * formulations know (not Delta_F, which only the condensed one
+     * computes), so that they decide alike.
+     */
+    struct CheckScales
+    {
+      double force                  = 1e-300;
+      double displacement           = 1e-300;
+      double force_tolerance        = 0.;
+      double displacement_tolerance = 0.;
+    };
+
+    CheckScales
+    check_scales(const Vector<double> &solution,
+                 const Vector<double> &displacement) const;
+
+    /**
+     * The steps of check(), for pair @p k of @p trial by its state: the
+     * new state into @p next and its violation into @p violation. A stuck
+     * pair slips or breaks open...
+     */
+    void
+    check_stick(const unsigned int    k,
+                const Trial          &trial,
+                const Vector<double> &solution,
+                const CheckScales    &scales,
+                Trial                &next,
+                double               &violation) const;
+
+    /**
+     * ... a slipping pair sticks, breaks open, changes its direction (3D)
+     * or its tensile slip...
+     */
+    void
+    check_slip(const unsigned int    k,
+               const Trial          &trial,
+               const Vector<double> &solution,
+               const Vector<double> &displacement,
+               const CheckScales    &scales,
+               Trial                &next,
+               double               &violation,
+               double               &direction_change) const;
+
+    /** ... an open pair closes... */
+    void
+    check_open(const unsigned int    k,
+               const Vector<double> &displacement,
+               const CheckScales    &scales,
+               Trial                &next,
+               double               &violation) const;
+
+    /** ... and a pair in tension beyond its limit opens (and breaks). */
+    void
+    break_open(const unsigned int k,
+               const Trial       &trial,
+               const double       r_n,
+               const CheckScales &scales,
+               Trial             &next,
+               double            &violation) const;
+
+    /**
      * d = Delta_F + C_hat rho + P_hat alpha in the pairs' frames, for the
      * solution (rho, alpha) of a trial.
      */

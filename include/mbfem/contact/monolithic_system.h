@@ -100,6 +100,23 @@ namespace mbfem
     };
 
     /**
+     * The steps of setup(): the blocks' offsets, their unpinned stiffnesses
+     * (with their patterns) and the scale of the multipliers...
+     */
+    void
+    assemble_blocks(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+                    std::vector<SparsityPattern>                   &patterns,
+                    std::vector<SparseMatrix<double>>              &stiffness);
+
+    /** ... the pattern of the whole system, for matrix... */
+    void
+    make_pattern(const std::vector<SparsityPattern> &patterns);
+
+    /** ... and its entries that do not change with the states. */
+    void
+    add_fixed_entries(const std::vector<SparseMatrix<double>> &stiffness);
+
+    /**
      * The relative displacements' constants (they change with the
      * prescribed values) and, @p with_terms, their terms (which follow the
      * constraints' structure and do not).
