@@ -420,6 +420,33 @@ namespace mbfem
     load_path(const unsigned int increment);
 
     /**
+     * load_path(), its start: the load (s = 0) for which the committed
+     * solution is exact with the present flexibility and coupling.
+     */
+    void
+    set_path_start();
+
+    /**
+     * load_path() at a singular segment that unloading cannot mend: throws
+     * ExcNoEquilibrium naming the mechanism, or ExcIncrementNotConverged.
+     */
+    void
+    throw_singular_path(const Trial       &trial,
+                        const std::string &head,
+                        const double       s,
+                        const unsigned int switches) const;
+
+    /**
+     * load_path() at s = 1: the fast iteration from the path's states;
+     * returns its iterations, throws if it does not settle or leaves a
+     * mechanism.
+     */
+    unsigned int
+    finish_path(const Trial       &trial,
+                const unsigned int increment,
+                const unsigned int switches);
+
+    /**
      * Sets the data of the increment to the load fraction @p s: s = 1 is
      * the increment's load, s = 0 the load for which the committed
      * solution is exact with the present flexibility.
@@ -440,6 +467,18 @@ namespace mbfem
      */
     bool
     correct_directions(Trial &trial, Segment &segment);
+
+    /**
+     * The smallest margin of pair @p k's state in @p trial at t on
+     * @p segment (scaled: negative means failed), and which condition:
+     * what first_event() samples and bisects.
+     */
+    struct Margin;
+    Margin
+    state_margin(const Trial       &trial,
+                 const Segment     &segment,
+                 const unsigned int k,
+                 const double       t) const;
 
     /** The first event on @p segment: pair, kind and where. */
     struct Event;
