@@ -71,6 +71,31 @@ namespace
               << std::endl;
     return 128 + signal;
   }
+
+
+  /**
+   * mbfem --print-parameters [2|3] [prm|json]: every parameter with its
+   * default and documentation, for writing an input file.
+   */
+  void
+  print_parameters(const int argc, char *argv[])
+  {
+    using namespace dealii;
+    const std::string dim    = (argc > 2 ? argv[2] : "2");
+    const std::string format = (argc > 3 ? argv[3] : "prm");
+    AssertThrow((dim == "2" || dim == "3") &&
+                  (format == "prm" || format == "json"),
+                ExcMessage("Use: mbfem --print-parameters [2|3] "
+                           "[prm|json]"));
+    ParameterHandler prm;
+    if (dim == "3")
+      mbfem::Parameters<3>::declare_parameters(prm);
+    else
+      mbfem::Parameters<2>::declare_parameters(prm);
+    prm.print_parameters(std::cout,
+                         format == "json" ? ParameterHandler::ShortJSON :
+                                            ParameterHandler::PRM);
+  }
 } // namespace
 
 
@@ -96,20 +121,7 @@ main(int argc, char *argv[])
         }
       if (first == "--print-parameters")
         {
-          const std::string dim    = (argc > 2 ? argv[2] : "2");
-          const std::string format = (argc > 3 ? argv[3] : "prm");
-          AssertThrow((dim == "2" || dim == "3") &&
-                        (format == "prm" || format == "json"),
-                      ExcMessage("Use: mbfem --print-parameters [2|3] "
-                                 "[prm|json]"));
-          ParameterHandler prm;
-          if (dim == "3")
-            mbfem::Parameters<3>::declare_parameters(prm);
-          else
-            mbfem::Parameters<2>::declare_parameters(prm);
-          prm.print_parameters(std::cout,
-                               format == "json" ? ParameterHandler::ShortJSON :
-                                                  ParameterHandler::PRM);
+          print_parameters(argc, argv);
           return 0;
         }
       AssertThrow(argc == 2,

@@ -672,6 +672,43 @@ namespace mbfem
 
 
   template <int dim>
+  PlasticUpdate
+  MultiBodyProblem<dim>::update_plastic_strain()
+  {
+    PlasticUpdate      update;
+    TimerOutput::Scope t(timer, "plasticity");
+    for (const auto &block : blocks)
+      update += block->plastic_state().update(*block);
+    return update;
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::check_plastic_iterations(
+    const unsigned int k,
+    const double       time,
+    const double       change,
+    const unsigned int plastic_iterations) const
+  {
+    AssertThrow(plastic_iterations < parameters.plasticity.max_iterations,
+                Exceptions::ExcIncrementNotConverged(
+                  "Increment " + std::to_string(k) +
+                  " (t = " + std::to_string(time) +
+                  "): the plastic strain still changes " + "by " +
+                  std::to_string(change) + " (relative) after " +
+                  std::to_string(plastic_iterations) +
+                  " iterations ('Plasticity/Maximum iterations'). The rock may "
+                  "be failing (no equilibrium with this strength), or the "
+                  "increment is too large: use more load increments. Results "
+                  "of the earlier increments are in " +
+                  parameters.output.directory + "."));
+  }
+
+
+
+  template <int dim>
   unsigned int
   MultiBodyProblem<dim>::solve_step(const unsigned int k,
                                     const double       time,
@@ -706,12 +743,7 @@ namespace mbfem
         if (!plasticity.enabled)
           break;
         ++plastic_iterations;
-        plastic_update = PlasticUpdate();
-        {
-          TimerOutput::Scope t(timer, "plasticity");
-          for (const auto &block : blocks)
-            plastic_update += block->plastic_state().update(*block);
-        }
+        plastic_update      = update_plastic_strain();
         const double change = std::sqrt(plastic_update.change2 /
                                         std::max(plastic_update.norm2, 1e-300));
         // The initial-stress iteration converges linearly, at a rate
@@ -729,18 +761,7 @@ namespace mbfem
                        change * 1e3);
         if (plastic_update.change2 == 0. || remaining < plasticity.tolerance)
           break;
-        AssertThrow(
-          plastic_iterations < plasticity.max_iterations,
-          Exceptions::ExcIncrementNotConverged(
-            "Increment " + std::to_string(k) + " (t = " + std::to_string(time) +
-            "): the plastic strain still changes " + "by " +
-            std::to_string(change) + " (relative) after " +
-            std::to_string(plastic_iterations) +
-            " iterations ('Plasticity/Maximum iterations'). The rock may "
-            "be failing (no equilibrium with this strength), or the "
-            "increment is too large: use more load increments. Results "
-            "of the earlier increments are in " +
-            parameters.output.directory + "."));
+        check_plastic_iterations(k, time, change, plastic_iterations);
 
         // Aitken's relaxation of the fixed point x = F(x): omega from
         // the last two residuals (plain steps converge at a rate near 1

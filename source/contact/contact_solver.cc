@@ -124,9 +124,37 @@ namespace mbfem
   ContactSolver<dim>::setup(
     const std::vector<std::unique_ptr<Block<dim>>> &blocks)
   {
-    const unsigned int n_r       = n_pairs * dim;
-    const bool         condensed = !monolithic;
+    const unsigned int n_r = n_pairs * dim;
 
+    number_floating_modes(blocks);
+
+    // Per block: H_b (condensed) and the block's part of P.
+    block_flexibility.clear();
+    pair_sides.assign(n_pairs, {});
+    condensed_system = CondensedSystem();
+    FullMatrix<double> p_global(n_r, n_alpha_total);
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      add_block_flexibility(*blocks[b], b, p_global);
+
+    rotate_coupling(p_global);
+
+    if (monolithic)
+      {
+        monolithic->setup(blocks, contact_pairs);
+        held = monolithic->held();
+        return;
+      }
+
+    find_held_directions();
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::number_floating_modes(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks)
+  {
     alpha_offset.assign(blocks.size(), 0);
     n_alpha.assign(blocks.size(), 0);
     n_alpha_total = 0;
@@ -140,69 +168,78 @@ namespace mbfem
         block_names.push_back(blocks[b]->name());
         mode_coefficients.push_back(blocks[b]->free_rigid_body_modes());
       }
+  }
 
-    // Per block: H_b (condensed) and the block's part of P.
-    block_flexibility.clear();
-    pair_sides.assign(n_pairs, {});
-    condensed_system = CondensedSystem();
-    FullMatrix<double> p_global(n_r, n_alpha_total);
-    for (unsigned int b = 0; b < blocks.size(); ++b)
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::add_block_flexibility(Block<dim>         &block,
+                                            const unsigned int  b,
+                                            FullMatrix<double> &p_global)
+  {
+    // The pair sides on this block: (pair, sign); b gets +r, a gets -r.
+    std::vector<std::pair<unsigned int, double>>    sides;
+    std::vector<types::global_dof_index>            dofs;
+    std::map<types::global_dof_index, unsigned int> index_of;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      for (const int sign : {-1, 1})
+        {
+          const auto &side = contact_pairs[k].side(sign);
+          if (side.block != b)
+            continue;
+          sides.emplace_back(k, sign);
+          for (const auto &node : side.nodes)
+            for (const auto dof : node.dofs)
+              if (index_of.emplace(dof, dofs.size()).second)
+                dofs.push_back(dof);
+        }
+    if (dofs.empty())
+      return;
+
+    const auto &modes = block.floating_modes();
+    // A side's displacement is sum_i w_i u(node_i), in its pair's
+    // frame: the rows of S (see project()) and P take the same weights.
+    std::vector<std::vector<std::pair<unsigned int, double>>> rows(
+      sides.size() * dim);
+    BlockFlexibility flexibility;
+    for (unsigned int s = 0; s < sides.size(); ++s)
       {
-        // The pair sides on this block: (pair, sign); b gets +r, a gets -r.
-        std::vector<std::pair<unsigned int, double>>    sides;
-        std::vector<types::global_dof_index>            dofs;
-        std::map<types::global_dof_index, unsigned int> index_of;
-        for (unsigned int k = 0; k < n_pairs; ++k)
-          for (const int sign : {-1, 1})
-            {
-              const auto &side = contact_pairs[k].side(sign);
-              if (side.block != b)
-                continue;
-              sides.emplace_back(k, sign);
-              for (const auto &node : side.nodes)
-                for (const auto dof : node.dofs)
-                  if (index_of.emplace(dof, dofs.size()).second)
-                    dofs.push_back(dof);
-            }
-        if (dofs.empty())
-          continue;
-
-        const auto &modes = blocks[b]->floating_modes();
-        // A side's displacement is sum_i w_i u(node_i), in its pair's
-        // frame: the rows of S (see project()) and P take the same weights.
-        std::vector<std::vector<std::pair<unsigned int, double>>> rows(
-          sides.size() * dim);
-        BlockFlexibility flexibility;
-        for (unsigned int s = 0; s < sides.size(); ++s)
+        const auto &[k, sign]       = sides[s];
+        const Tensor<2, dim> &frame = contact_pairs[k].frame;
+        flexibility.pairs.push_back(k);
+        pair_sides[k].emplace_back(block_flexibility.size(), s);
+        for (const auto &node : contact_pairs[k].side(sign).nodes)
           {
-            const auto &[k, sign]       = sides[s];
-            const Tensor<2, dim> &frame = contact_pairs[k].frame;
-            flexibility.pairs.push_back(k);
-            pair_sides[k].emplace_back(block_flexibility.size(), s);
-            for (const auto &node : contact_pairs[k].side(sign).nodes)
-              {
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int c = 0; c < dim; ++c)
-                    if (frame[i][c] != 0.)
-                      rows[s * dim + i].emplace_back(index_of[node.dofs[c]],
-                                                     sign * node.weight *
-                                                       frame[i][c]);
-                for (unsigned int a = 0; a < modes.size(); ++a)
-                  for (unsigned int c = 0; c < dim; ++c)
-                    p_global(k * dim + c, alpha_offset[b] + a) +=
-                      sign * node.weight * modes[a](node.dofs[c]);
-              }
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int c = 0; c < dim; ++c)
+                if (frame[i][c] != 0.)
+                  rows[s * dim + i].emplace_back(index_of[node.dofs[c]],
+                                                 sign * node.weight *
+                                                   frame[i][c]);
+            for (unsigned int a = 0; a < modes.size(); ++a)
+              for (unsigned int c = 0; c < dim; ++c)
+                p_global(k * dim + c, alpha_offset[b] + a) +=
+                  sign * node.weight * modes[a](node.dofs[c]);
           }
-        // The monolithic system needs no flexibility; the free modes at
-        // the pairs (P) it still needs to name a block it cannot hold.
-        if (condensed)
-          {
-            FullMatrix<double> c_block = blocks[b]->flexibility(dofs);
-            flexibility.matrix         = project(c_block, rows);
-          }
-        block_flexibility.push_back(std::move(flexibility));
       }
+    // The monolithic system needs no flexibility; the free modes at
+    // the pairs (P) it still needs to name a block it cannot hold.
+    if (!monolithic)
+      {
+        FullMatrix<double> c_block = block.flexibility(dofs);
+        flexibility.matrix         = project(c_block, rows);
+      }
+    block_flexibility.push_back(std::move(flexibility));
+  }
 
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::rotate_coupling(const FullMatrix<double> &p_global)
+  {
+    const unsigned int n_r = n_pairs * dim;
     // P into the pairs' frames.
     coupling.reinit(n_r, n_alpha_total);
     for (unsigned int k = 0; k < n_pairs; ++k)
@@ -214,14 +251,15 @@ namespace mbfem
               value += contact_pairs[k].frame[i][c] * p_global(k * dim + c, a);
             coupling(k * dim + i, a) = value;
           }
+  }
 
-    if (monolithic)
-      {
-        monolithic->setup(blocks, contact_pairs);
-        held = monolithic->held();
-        return;
-      }
 
+
+  template <int dim>
+  void
+  ContactSolver<dim>::find_held_directions()
+  {
+    const unsigned int  n_r = n_pairs * dim;
     std::vector<double> diagonal(n_r);
     for (unsigned int i = 0; i < n_r; ++i)
       diagonal[i] = flexibility_entry(i, i);
@@ -930,23 +968,55 @@ namespace mbfem
 
 
   template <int dim>
+  typename ContactSolver<dim>::Trial
+  ContactSolver<dim>::single_change(const Trial               &from,
+                                    const Trial               &to,
+                                    const std::vector<double> &violation)
+  {
+    Trial              result = from;
+    const unsigned int worst =
+      std::distance(violation.begin(),
+                    std::max_element(violation.begin(), violation.end()));
+    result.state[worst]        = to.state[worst];
+    result.broken[worst]       = to.broken[worst];
+    result.tensile_slip[worst] = to.tensile_slip[worst];
+    result.slip_direction      = to.slip_direction;
+    result.direction_stiffness = to.direction_stiffness;
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactSolver<dim>::describe_cycle(const std::string &head,
+                                     const unsigned int iteration,
+                                     const Trial       &trial,
+                                     const Trial       &next) const
+  {
+    std::ostringstream pairs;
+    unsigned int       n_listed = 0;
+    for (unsigned int k = 0; k < n_pairs && n_listed < 10; ++k)
+      if (next.state[k] != trial.state[k])
+        {
+          pairs << "\n      pair " << k << " at (" << contact_pairs[k].a.point
+                << "): " << to_string(trial.state[k]) << " <-> "
+                << to_string(next.state[k]);
+          ++n_listed;
+        }
+    return head + ": the contact states cycle after " +
+           std::to_string(iteration) +
+           " iterations, even switching one pair at a time. Pairs "
+           "that keep switching:" +
+           pairs.str() + "\n    Use more load increments.";
+  }
+
+
+
+  template <int dim>
   typename ContactSolver<dim>::FastOutcome
   ContactSolver<dim>::fast_iteration(Trial trial, const unsigned int increment)
   {
-    const auto single_change = [&](const Trial               &from,
-                                   const Trial               &to,
-                                   const std::vector<double> &violation) {
-      Trial              result = from;
-      const unsigned int worst =
-        std::distance(violation.begin(),
-                      std::max_element(violation.begin(), violation.end()));
-      result.state[worst]        = to.state[worst];
-      result.broken[worst]       = to.broken[worst];
-      result.tensile_slip[worst] = to.tensile_slip[worst];
-      result.slip_direction      = to.slip_direction;
-      result.direction_stiffness = to.direction_stiffness;
-      return result;
-    };
     const std::string head = "Load increment " + std::to_string(increment);
 
     FastOutcome           outcome;
@@ -1009,23 +1079,7 @@ namespace mbfem
               }
             else
               {
-                std::ostringstream pairs;
-                unsigned int       n_listed = 0;
-                for (unsigned int k = 0; k < n_pairs && n_listed < 10; ++k)
-                  if (next.state[k] != trial.state[k])
-                    {
-                      pairs << "\n      pair " << k << " at ("
-                            << contact_pairs[k].a.point
-                            << "): " << to_string(trial.state[k]) << " <-> "
-                            << to_string(next.state[k]);
-                      ++n_listed;
-                    }
-                outcome.failure =
-                  head + ": the contact states cycle after " +
-                  std::to_string(iteration) +
-                  " iterations, even switching one pair at a time. Pairs "
-                  "that keep switching:" +
-                  pairs.str() + "\n    Use more load increments.";
+                outcome.failure = describe_cycle(head, iteration, trial, next);
                 return outcome;
               }
           }

@@ -46,6 +46,19 @@ namespace mbfem
     constexpr double tolerance = 1e-9;
   } // namespace internal
 
+  namespace
+  {
+    /** The part of the load path's messages that says how far it got. */
+    std::string
+    reached(const double s, const unsigned int n)
+    {
+      std::ostringstream text;
+      text << " (the load path held up to s = " << std::setprecision(6) << s
+           << " of this increment, after " << n << " state switches)";
+      return text.str();
+    }
+  } // namespace
+
   using internal::Condition;
   using internal::n_samples;
   using internal::tolerance;
@@ -178,53 +191,71 @@ namespace mbfem
 
 
   template <int dim>
+  struct ContactSolver<dim>::Margin
+  {
+    double    value     = std::numeric_limits<double>::max();
+    Condition condition = Condition::none;
+  };
+
+
+
+  template <int dim>
+  typename ContactSolver<dim>::Margin
+  ContactSolver<dim>::state_margin(const Trial       &trial,
+                                   const Segment     &segment,
+                                   const unsigned int k,
+                                   const double       t) const
+  {
+    const double   F = segment.force_scale, D = segment.displacement_scale;
+    const auto    &pair = contact_pairs[k];
+    Tensor<1, dim> rho, d;
+    segment.at(k, t, rho, d);
+    Margin     worst;
+    const auto consider = [&](const double value, const Condition c) {
+      if (value < worst.value)
+        worst = {value, c};
+    };
+    const double tension = pair.joint.tensile_limit(pair.area, trial.broken[k]);
+    Tensor<1, dim> r_t, increment;
+    for (unsigned int e = 1; e < dim; ++e)
+      {
+        r_t[e]       = rho[e];
+        increment[e] = d[e] - committed_displacement[k][e];
+      }
+    switch (trial.state[k])
+      {
+        case ContactState::stick:
+          consider((rho[0] + tension) / F, Condition::tension);
+          consider(
+            (pair.joint.shear_strength(rho[0], pair.area, trial.broken[k]) -
+             r_t.norm()) /
+              F,
+            Condition::friction);
+          break;
+        case ContactState::slip:
+          consider((rho[0] + tension) / F, Condition::tension);
+          consider(increment * trial.slip_direction[k] / D,
+                   Condition::reversal);
+          if (tension > 0.)
+            consider((trial.tensile_slip[k] ? -rho[0] : rho[0]) / F,
+                     Condition::tensile_flag);
+          break;
+        case ContactState::open:
+          consider((pair.initial_gap + d[0]) / D, Condition::closure);
+          break;
+      }
+    return worst;
+  }
+
+
+
+  template <int dim>
   typename ContactSolver<dim>::Event
   ContactSolver<dim>::first_event(const Trial   &trial,
                                   const Segment &segment) const
   {
-    const double F = segment.force_scale, D = segment.displacement_scale;
-    // The smallest margin of pair k's state at t, and which condition.
     const auto margin = [&](const unsigned int k, const double t) {
-      const auto    &pair = contact_pairs[k];
-      Tensor<1, dim> rho, d;
-      segment.at(k, t, rho, d);
-      std::pair<double, Condition> worst(std::numeric_limits<double>::max(),
-                                         Condition::none);
-      const auto consider = [&](const double value, const Condition c) {
-        if (value < worst.first)
-          worst = {value, c};
-      };
-      const double tension =
-        pair.joint.tensile_limit(pair.area, trial.broken[k]);
-      Tensor<1, dim> r_t, increment;
-      for (unsigned int e = 1; e < dim; ++e)
-        {
-          r_t[e]       = rho[e];
-          increment[e] = d[e] - committed_displacement[k][e];
-        }
-      switch (trial.state[k])
-        {
-          case ContactState::stick:
-            consider((rho[0] + tension) / F, Condition::tension);
-            consider(
-              (pair.joint.shear_strength(rho[0], pair.area, trial.broken[k]) -
-               r_t.norm()) /
-                F,
-              Condition::friction);
-            break;
-          case ContactState::slip:
-            consider((rho[0] + tension) / F, Condition::tension);
-            consider(increment * trial.slip_direction[k] / D,
-                     Condition::reversal);
-            if (tension > 0.)
-              consider((trial.tensile_slip[k] ? -rho[0] : rho[0]) / F,
-                       Condition::tensile_flag);
-            break;
-          case ContactState::open:
-            consider((pair.initial_gap + d[0]) / D, Condition::closure);
-            break;
-        }
-      return worst;
+      return state_margin(trial, segment, k, t);
     };
 
     Event first;
@@ -236,19 +267,19 @@ namespace mbfem
           continue;
         // The first sample where the margin fails, then bisection to where
         // it crosses zero.
-        double     low = 0., high = -1.;
-        const auto m_0       = margin(k, 0.);
-        Condition  condition = m_0.second;
-        if (m_0.first < -tolerance)
+        double       low = 0., high = -1.;
+        const Margin m_0       = margin(k, 0.);
+        Condition    condition = m_0.condition;
+        if (m_0.value < -tolerance)
           high = 0.;
         for (unsigned int j = 1; j <= n_samples && high < 0.; ++j)
           {
             const double t = double(j) / n_samples;
-            const auto   m = margin(k, t);
-            if (m.first < -tolerance)
+            const Margin m = margin(k, t);
+            if (m.value < -tolerance)
               {
                 high      = t;
-                condition = m.second;
+                condition = m.condition;
               }
             else
               low = t;
@@ -261,7 +292,7 @@ namespace mbfem
             for (unsigned int b = 0; b < 60; ++b)
               {
                 const double middle = 0.5 * (low + high);
-                if (margin(k, middle).first < 0.)
+                if (margin(k, middle).value < 0.)
                   high = middle;
                 else
                   low = middle;
@@ -391,32 +422,9 @@ namespace mbfem
   unsigned int
   ContactSolver<dim>::load_path(const unsigned int increment)
   {
-    // The start: the load for which the committed solution is exact with
-    // the present C_hat, P_hat (these change between Newton's passes).
-    const unsigned int n_r = n_pairs * dim;
-    full_displacement      = external_displacement;
-    full_resultant         = external_resultant;
-    Vector<double> start(n_r + n_alpha_total);
-    if (committed_solution.size() == start.size())
-      start = committed_solution;
-    external_displacement.reinit(n_r);
-    start_displacement = relative_displacement(start);
-    start_displacement *= -1.;
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      for (unsigned int i = 0; i < dim; ++i)
-        start_displacement(k * dim + i) += committed_displacement[k][i];
-    start_resultant.assign(n_alpha_total, 0.);
-    for (unsigned int a = 0; a < n_alpha_total; ++a)
-      for (unsigned int j = 0; j < n_r; ++j)
-        start_resultant[a] -= coupling(j, a) * start(j);
+    set_path_start();
 
-    const std::string head    = "Load increment " + std::to_string(increment);
-    const auto        reached = [&](const double s, const unsigned int n) {
-      std::ostringstream text;
-      text << " (the load path held up to s = " << std::setprecision(6) << s
-           << " of this increment, after " << n << " state switches)";
-      return text.str();
-    };
+    const std::string head = "Load increment " + std::to_string(increment);
 
     Trial trial = committed;
     std::fill(trial.direction_stiffness.begin(),
@@ -445,17 +453,7 @@ namespace mbfem
                     switches <= max_switches)
                   continue;
               }
-            const std::string motion = mechanism(trial);
-            AssertThrow(motion.empty(),
-                        Exceptions::ExcNoEquilibrium(head + ": no equilibrium" +
-                                                     reached(s, switches) +
-                                                     "." + motion));
-            AssertThrow(false,
-                        Exceptions::ExcIncrementNotConverged(
-                          head + ": the interface system is singular" +
-                          reached(s, switches) +
-                          ", and no rigid motion is free: check for pairs "
-                          "whose nodes are both fixed in some direction."));
+            throw_singular_path(trial, head, s, switches);
           }
         const Event event = first_event(trial, segment);
         if (event.pair == numbers::invalid_unsigned_int)
@@ -477,6 +475,66 @@ namespace mbfem
                       reached(s, switches) + "."));
       }
 
+    return switches + finish_path(trial, increment, switches);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::set_path_start()
+  {
+    // The start: the load for which the committed solution is exact with
+    // the present C_hat, P_hat (these change between Newton's passes).
+    const unsigned int n_r = n_pairs * dim;
+    full_displacement      = external_displacement;
+    full_resultant         = external_resultant;
+    Vector<double> start(n_r + n_alpha_total);
+    if (committed_solution.size() == start.size())
+      start = committed_solution;
+    external_displacement.reinit(n_r);
+    start_displacement = relative_displacement(start);
+    start_displacement *= -1.;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      for (unsigned int i = 0; i < dim; ++i)
+        start_displacement(k * dim + i) += committed_displacement[k][i];
+    start_resultant.assign(n_alpha_total, 0.);
+    for (unsigned int a = 0; a < n_alpha_total; ++a)
+      for (unsigned int j = 0; j < n_r; ++j)
+        start_resultant[a] -= coupling(j, a) * start(j);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::throw_singular_path(const Trial       &trial,
+                                          const std::string &head,
+                                          const double       s,
+                                          const unsigned int switches) const
+  {
+    const std::string motion = mechanism(trial);
+    AssertThrow(motion.empty(),
+                Exceptions::ExcNoEquilibrium(head + ": no equilibrium" +
+                                             reached(s, switches) + "." +
+                                             motion));
+    AssertThrow(false,
+                Exceptions::ExcIncrementNotConverged(
+                  head + ": the interface system is singular" +
+                  reached(s, switches) +
+                  ", and no rigid motion is free: check for pairs "
+                  "whose nodes are both fixed in some direction."));
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactSolver<dim>::finish_path(const Trial       &trial,
+                                  const unsigned int increment,
+                                  const unsigned int switches)
+  {
+    const std::string head = "Load increment " + std::to_string(increment);
     // At s = 1: the states the path ended with, solved and checked as the
     // fast iteration does (in 3D its Newton on the slip directions ends
     // there too).
@@ -492,7 +550,7 @@ namespace mbfem
                 Exceptions::ExcNoEquilibrium(head + ": no equilibrium" +
                                              reached(1., switches) + "." +
                                              motion));
-    return switches + polish.iterations;
+    return polish.iterations;
   }
 
 

@@ -60,6 +60,108 @@ namespace mbfem
         values.push_back(a);
       }
     };
+
+
+    /**
+     * The equilibrium rows of infeasibility()'s LP (row a = mode a) with
+     * their phase-1 slacks; returns the scaled load's 1-norm.
+     */
+    double
+    add_equilibrium_rows(LinearProgram             &lp,
+                         const std::vector<double> &external_resultant,
+                         const double               force_scale)
+    {
+      const double inf       = COIN_DBL_MAX;
+      double       load_norm = 0.;
+      for (unsigned int a = 0; a < external_resultant.size(); ++a)
+        {
+          const double b = -external_resultant[a] / force_scale;
+          lp.add_row(b, b);
+          load_norm += std::abs(b);
+          // Slacks s+ and s-: the phase-1 objective.
+          lp.add(a, lp.add_column(0., inf, 1.), 1.);
+          lp.add(a, lp.add_column(0., inf, 1.), -1.);
+        }
+      return load_norm;
+    }
+
+    /**
+     * The facets r_t . e_j <= kappa (strength + mu r_n) of one sliding
+     * pair whose normal force is column @p first_column (2 in 2D).
+     */
+    template <int dim>
+    void
+    add_cone_facets(LinearProgram     &lp,
+                    const unsigned int first_column,
+                    const unsigned int n_facets,
+                    const double       kappa,
+                    const double       strength,
+                    const double       mu)
+    {
+      const double       inf     = COIN_DBL_MAX;
+      const unsigned int n_sides = (dim == 2 ? 2 : n_facets);
+      for (unsigned int j = 0; j < n_sides; ++j)
+        {
+          const unsigned int row = lp.add_row(-inf, kappa * strength);
+          lp.add(row, first_column, -kappa * mu);
+          if (dim == 2)
+            lp.add(row, first_column + 1, j == 0 ? 1. : -1.);
+          else
+            {
+              const double angle = 2. * numbers::PI * j / n_sides;
+              lp.add(row, first_column + 1, std::cos(angle));
+              lp.add(row, first_column + dim - 1, std::sin(angle));
+            }
+        }
+    }
+
+    /** Loads @p lp into @p model and solves it; throws unless optimal. */
+    void
+    solve_phase_one(const LinearProgram &lp, ClpSimplex &model)
+    {
+      const CoinPackedMatrix matrix(true,
+                                    lp.rows.data(),
+                                    lp.columns.data(),
+                                    lp.values.data(),
+                                    lp.values.size());
+      model.setLogLevel(0);
+      model.loadProblem(matrix,
+                        lp.column_lower.data(),
+                        lp.column_upper.data(),
+                        lp.objective.data(),
+                        lp.row_lower.data(),
+                        lp.row_upper.data());
+      model.dual();
+      // The slacks make every phase-1 LP feasible and bounded below by 0:
+      // anything but optimal is the solver's failure, not the model's.
+      AssertThrow(model.isProvenOptimal(),
+                  ExcMessage("The statics certificate's linear program (Clp) "
+                             "ended with status " +
+                             std::to_string(model.status()) + "."));
+    }
+
+    /**
+     * The duals y of the equilibrium rows: -y is a virtual velocity of
+     * the modes whose power, loads minus joints, is the optimum; scaled
+     * to a largest entry of 1 and oriented so that the loads do work.
+     */
+    void
+    mechanism_from_duals(const double              *dual,
+                         const std::vector<double> &external_resultant,
+                         std::vector<double>       &mechanism)
+    {
+      const unsigned int n_modes = external_resultant.size();
+      mechanism.assign(n_modes, 0.);
+      double largest = 0., work = 0.;
+      for (unsigned int a = 0; a < n_modes; ++a)
+        {
+          mechanism[a] = -dual[a];
+          largest      = std::max(largest, std::abs(dual[a]));
+          work += external_resultant[a] * mechanism[a];
+        }
+      for (double &v : mechanism)
+        v *= (work < 0. ? -1. : 1.) / (largest > 0. ? largest : 1.);
+    }
   } // namespace
 
 
@@ -107,16 +209,8 @@ namespace mbfem
     LinearProgram      lp;
 
     // Equilibrium rows first (row a = mode a), then the cones.
-    double load_norm = 0.;
-    for (unsigned int a = 0; a < n_modes; ++a)
-      {
-        const double b = -external_resultant[a] / force_scale;
-        lp.add_row(b, b);
-        load_norm += std::abs(b);
-        // Slacks s+ and s-: the phase-1 objective.
-        lp.add(a, lp.add_column(0., inf, 1.), 1.);
-        lp.add(a, lp.add_column(0., inf, 1.), -1.);
-      }
+    const double load_norm =
+      add_equilibrium_rows(lp, external_resultant, force_scale);
 
     // A polygon of n_facets sides around the circle of radius s: its
     // facets t . e_j <= kappa s touch the circle (kappa = 1) or pass
@@ -150,61 +244,19 @@ namespace mbfem
           continue;
         // |r_t| <= c A + mu r_n (+ mu sigma_t A, circumscribed).
         const double strength = cohesion + (circumscribed ? mu * tension : 0.);
-        const unsigned int n_sides = (dim == 2 ? 2 : n_facets);
-        for (unsigned int j = 0; j < n_sides; ++j)
-          {
-            const unsigned int row = lp.add_row(-inf, kappa * strength);
-            lp.add(row, first_column[i], -kappa * mu);
-            if (dim == 2)
-              lp.add(row, first_column[i] + 1, j == 0 ? 1. : -1.);
-            else
-              {
-                const double angle = 2. * numbers::PI * j / n_sides;
-                lp.add(row, first_column[i] + 1, std::cos(angle));
-                lp.add(row, first_column[i] + dim - 1, std::sin(angle));
-              }
-          }
+        add_cone_facets<dim>(
+          lp, first_column[i], n_facets, kappa, strength, mu);
       }
 
-    const CoinPackedMatrix matrix(true,
-                                  lp.rows.data(),
-                                  lp.columns.data(),
-                                  lp.values.data(),
-                                  lp.values.size());
-    ClpSimplex             model;
-    model.setLogLevel(0);
-    model.loadProblem(matrix,
-                      lp.column_lower.data(),
-                      lp.column_upper.data(),
-                      lp.objective.data(),
-                      lp.row_lower.data(),
-                      lp.row_upper.data());
-    model.dual();
-    // The slacks make every phase-1 LP feasible and bounded below by 0:
-    // anything but optimal is the solver's failure, not the model's.
-    AssertThrow(model.isProvenOptimal(),
-                ExcMessage("The statics certificate's linear program (Clp) "
-                           "ended with status " +
-                           std::to_string(model.status()) + "."));
+    ClpSimplex model;
+    solve_phase_one(lp, model);
     const double optimum =
       std::max(0., model.objectiveValue()) / std::max(load_norm, 1e-300);
 
     if (mechanism)
-      {
-        // The duals y of the equilibrium rows: -y is a virtual velocity of
-        // the modes whose power, loads minus joints, is the optimum.
-        const double *dual = model.dualRowSolution();
-        mechanism->assign(n_modes, 0.);
-        double largest = 0., work = 0.;
-        for (unsigned int a = 0; a < n_modes; ++a)
-          {
-            (*mechanism)[a] = -dual[a];
-            largest         = std::max(largest, std::abs(dual[a]));
-            work += external_resultant[a] * (*mechanism)[a];
-          }
-        for (double &v : *mechanism)
-          v *= (work < 0. ? -1. : 1.) / (largest > 0. ? largest : 1.);
-      }
+      mechanism_from_duals(model.dualRowSolution(),
+                           external_resultant,
+                           *mechanism);
     if (forces)
       {
         const double *x = model.primalColumnSolution();

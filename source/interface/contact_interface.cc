@@ -14,10 +14,14 @@
 
 namespace mbfem
 {
-  void
-  ContactParameters::declare_parameters(ParameterHandler &prm)
+  namespace
   {
-    prm.enter_subsection("Contact");
+    /**
+     * Contact: the interfaces and their joint laws, one value per interface
+     * or per joint set.
+     */
+    void
+    declare_interface_entries(ParameterHandler &prm)
     {
       prm.declare_entry(
         "Interfaces",
@@ -69,6 +73,12 @@ namespace mbfem
         "Tensile strength sigma_t (stress) of each interface: a pair carries "
         "tension up to sigma_t A; beyond it the pair breaks and keeps "
         "sigma_t = c = 0 for the rest of the run.");
+    }
+
+    /** Contact: how pairs are found and the interface system solved. */
+    void
+    declare_solver_entries(ParameterHandler &prm)
+    {
       prm.declare_entry(
         "Search distance",
         "0",
@@ -100,6 +110,12 @@ namespace mbfem
         "increments; their pair states, forces (relative to the largest pair "
         "force), gaps and slips (relative to the largest displacement) are "
         "compared at every increment, and both are timed.");
+    }
+
+    /** Contact/Exact traction: 2D tractions to measure the pairs' against. */
+    void
+    declare_exact_traction_entries(ParameterHandler &prm)
+    {
       prm.enter_subsection("Exact traction");
       {
         prm.declare_entry(
@@ -119,6 +135,19 @@ namespace mbfem
         prm.leave_subsection();
       }
       prm.leave_subsection();
+    }
+  } // namespace
+
+
+
+  void
+  ContactParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    {
+      declare_interface_entries(prm);
+      declare_solver_entries(prm);
+      declare_exact_traction_entries(prm);
     }
     prm.leave_subsection();
   }
@@ -143,19 +172,19 @@ namespace mbfem
                              " interfaces: give one, or one per interface."));
       return values;
     }
-  } // namespace
 
-
-
-  void
-  ContactParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Contact");
+    /**
+     * Contact/Interfaces: 'all' and the 'blocks a:b' and 'boundaries a:b'
+     * entries, each checked with a message naming it.
+     */
+    void
+    parse_interface_list(const std::string                 &text,
+                         std::vector<InterfaceDeclaration> &interfaces,
+                         bool                              &all_shared_faces)
     {
       interfaces.clear();
       all_shared_faces = false;
-      for (const auto &entry :
-           Utilities::split_string_list(prm.get("Interfaces"), ';'))
+      for (const auto &entry : Utilities::split_string_list(text, ';'))
         {
           if (entry == "all")
             {
@@ -186,6 +215,17 @@ namespace mbfem
           declaration.side_b = Utilities::string_to_int(ids[1]);
           interfaces.push_back(declaration);
         }
+    }
+  } // namespace
+
+
+
+  void
+  ContactParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    {
+      parse_interface_list(prm.get("Interfaces"), interfaces, all_shared_faces);
       // With 'all', one value for every interface: the declared ones and
       // the default of the found ones.
       const unsigned int n =

@@ -108,6 +108,20 @@ namespace mbfem
                unsigned int      &reference_iterations,
                PlasticUpdate     &plastic_update);
 
+    /** solve_step(): every block's plastic strain from its last solution. */
+    PlasticUpdate
+    update_plastic_strain();
+
+    /**
+     * solve_step(): throws ExcIncrementNotConverged once the plastic
+     * iteration has used 'Plasticity/Maximum iterations'.
+     */
+    void
+    check_plastic_iterations(const unsigned int k,
+                             const double       time,
+                             const double       change,
+                             const unsigned int plastic_iterations) const;
+
     /**
      * Increment @p k, retried in halved steps if it fails and
      * 'Load history/Maximum step halvings' allows; returns the plastic

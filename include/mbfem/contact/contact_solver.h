@@ -360,6 +360,22 @@ namespace mbfem
     FastOutcome
     fast_iteration(Trial trial, const unsigned int increment);
 
+    /**
+     * @p from with only the pair of the largest @p violation switched to
+     * its state in @p to: the damped step of fast_iteration().
+     */
+    static Trial
+    single_change(const Trial               &from,
+                  const Trial               &to,
+                  const std::vector<double> &violation);
+
+    /** fast_iteration()'s message when the states cycle even damped. */
+    std::string
+    describe_cycle(const std::string &head,
+                   const unsigned int iteration,
+                   const Trial       &trial,
+                   const Trial       &next) const;
+
     /** Stores a consistent trial and its solution as current. */
     void
     accept(const Trial          &trial,
@@ -404,6 +420,33 @@ namespace mbfem
     load_path(const unsigned int increment);
 
     /**
+     * load_path(), its start: the load (s = 0) for which the committed
+     * solution is exact with the present flexibility and coupling.
+     */
+    void
+    set_path_start();
+
+    /**
+     * load_path() at a singular segment that unloading cannot mend: throws
+     * ExcNoEquilibrium naming the mechanism, or ExcIncrementNotConverged.
+     */
+    void
+    throw_singular_path(const Trial       &trial,
+                        const std::string &head,
+                        const double       s,
+                        const unsigned int switches) const;
+
+    /**
+     * load_path() at s = 1: the fast iteration from the path's states;
+     * returns its iterations, throws if it does not settle or leaves a
+     * mechanism.
+     */
+    unsigned int
+    finish_path(const Trial       &trial,
+                const unsigned int increment,
+                const unsigned int switches);
+
+    /**
      * Sets the data of the increment to the load fraction @p s: s = 1 is
      * the increment's load, s = 0 the load for which the committed
      * solution is exact with the present flexibility.
@@ -424,6 +467,18 @@ namespace mbfem
      */
     bool
     correct_directions(Trial &trial, Segment &segment);
+
+    /**
+     * The smallest margin of pair @p k's state in @p trial at t on
+     * @p segment (scaled: negative means failed), and which condition:
+     * what first_event() samples and bisects.
+     */
+    struct Margin;
+    Margin
+    state_margin(const Trial       &trial,
+                 const Segment     &segment,
+                 const unsigned int k,
+                 const double       t) const;
 
     /** The first event on @p segment: pair, kind and where. */
     struct Event;
@@ -466,6 +521,29 @@ namespace mbfem
     std::vector<BlockFlexibility> block_flexibility;
     /** For each pair, its sides: (index into block_flexibility, side). */
     std::vector<std::vector<std::pair<unsigned int, unsigned int>>> pair_sides;
+
+    /** setup(), step 1: each block's floating modes get their alpha_offset. */
+    void
+    number_floating_modes(
+      const std::vector<std::unique_ptr<Block<dim>>> &blocks);
+
+    /**
+     * setup(), step 2: the pair sides on @p block (number @p b), its H_b
+     * (condensed only) and its part of P (global axes) into @p p_global.
+     */
+    void
+    add_block_flexibility(Block<dim>         &block,
+                          const unsigned int  b,
+                          FullMatrix<double> &p_global);
+
+    /** setup(), step 3: P from global axes into the pairs' frames. */
+    void
+    rotate_coupling(const FullMatrix<double> &p_global);
+
+    /** setup(), step 4 (condensed): flexibility_scale and the held directions.
+     */
+    void
+    find_held_directions();
 
     /** C_hat(k * dim + i, l * dim + j) from the blocks' H_b. */
     double
