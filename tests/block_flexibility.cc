@@ -10,10 +10,10 @@
 
 #include <mbfem/block/block.h>
 #include <mbfem/block/boundary_conditions.h>
+#include <mbfem/mesh/mesh.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/grid/grid_generator.h>
 
 #include <cstdio>
 #include <iostream>
@@ -35,26 +35,30 @@ check(const std::string &supports, const unsigned int degree)
   mbfem::DiscretisationParameters discretisation;
   discretisation.degree         = degree;
   discretisation.mapping_degree = degree;
-  mbfem::Block<dim> block(mbfem::Material(2e9, 0.3),
+  mbfem::Block<dim>     block(mbfem::Material(2e9, 0.3),
                           discretisation,
                           "Amesos_Klu");
-  GridGenerator::hyper_cube(block.triangulation, 0., 2., true);
-  block.triangulation.refine_global(2);
+  mbfem::MeshParameters mesh;
+  mesh.source              = "generator";
+  mesh.generator_name      = "hyper_cube";
+  mesh.generator_arguments = "0:2:true";
+  mesh.initial_refinement  = 2;
+  block.create_mesh(mesh);
   block.setup_system(bc);
   block.assemble_stiffness();
   block.factorize();
 
   // The contact DoFs: every DoF on the faces x = 2, y = 0 and z = 2.
   const IndexSet face_x =
-    DoFTools::extract_boundary_dofs(block.dof_handler,
+    DoFTools::extract_boundary_dofs(block.get_dof_handler(),
                                     ComponentMask(),
                                     std::set<types::boundary_id>{1});
   const IndexSet face_y =
-    DoFTools::extract_boundary_dofs(block.dof_handler,
+    DoFTools::extract_boundary_dofs(block.get_dof_handler(),
                                     ComponentMask(),
                                     std::set<types::boundary_id>{2});
   const IndexSet face_z =
-    DoFTools::extract_boundary_dofs(block.dof_handler,
+    DoFTools::extract_boundary_dofs(block.get_dof_handler(),
                                     ComponentMask(),
                                     std::set<types::boundary_id>{5});
   IndexSet contact = face_x;
@@ -74,7 +78,7 @@ check(const std::string &supports, const unsigned int degree)
       block.add_point_forces({dofs[j]}, {1.});
       block.solve();
       for (unsigned int i = 0; i < dofs.size(); ++i)
-        reference(i, j) = block.solution(dofs[i]);
+        reference(i, j) = block.get_solution()(dofs[i]);
     }
 
   double largest = 0., difference = 0., asymmetry = 0.;

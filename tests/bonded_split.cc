@@ -84,9 +84,9 @@ main(int argc, char *argv[])
   const auto           split = run(problem + cut, cut_parameters);
 
   const auto                   &reference = *whole->get_blocks()[0];
-  Functions::FEFieldFunction<2> field(reference.dof_handler,
-                                      reference.solution,
-                                      reference.mapping);
+  Functions::FEFieldFunction<2> field(reference.get_dof_handler(),
+                                      reference.get_solution(),
+                                      reference.get_mapping());
 
   std::cout << "cut body: " << split->get_blocks().size() << " blocks";
   for (const auto &block : split->get_blocks())
@@ -105,27 +105,28 @@ main(int argc, char *argv[])
       const auto     points = block->support_points();
       Vector<double> value(2);
       // Displacement at every node of the block.
-      std::vector<types::global_dof_index> dofs(block->fe.n_dofs_per_cell());
-      for (const auto &cell : block->dof_handler.active_cell_iterators())
+      std::vector<types::global_dof_index> dofs(
+        block->get_fe().n_dofs_per_cell());
+      for (const auto &cell : block->get_dof_handler().active_cell_iterators())
         {
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
             {
               const unsigned int c =
-                block->fe.system_to_component_index(i).first;
+                block->get_fe().system_to_component_index(i).first;
               field.vector_value(points[dofs[i]], value);
               u_difference =
                 std::max(u_difference,
-                         std::abs(block->solution(dofs[i]) - value(c)));
+                         std::abs(block->get_solution()(dofs[i]) - value(c)));
               u_max = std::max(u_max, std::abs(value(c)));
             }
           // Stress at the cell centre, from both fields.
           const Point<2>            centre = cell->center();
           std::vector<Tensor<1, 2>> grad_ref(2), grad_cut(2);
           field.vector_gradient(centre, grad_ref);
-          Functions::FEFieldFunction<2> own(block->dof_handler,
-                                            block->solution,
-                                            block->mapping);
+          Functions::FEFieldFunction<2> own(block->get_dof_handler(),
+                                            block->get_solution(),
+                                            block->get_mapping());
           own.set_active_cell(cell);
           own.vector_gradient(centre, grad_cut);
           Tensor<2, 2> g_ref, g_cut;
@@ -134,8 +135,8 @@ main(int argc, char *argv[])
               g_ref[d] = grad_ref[d];
               g_cut[d] = grad_cut[d];
             }
-          const auto s_ref = block->material.stress<2>(symmetrize(g_ref));
-          const auto s_cut = block->material.stress<2>(symmetrize(g_cut));
+          const auto s_ref = block->get_material().stress<2>(symmetrize(g_ref));
+          const auto s_cut = block->get_material().stress<2>(symmetrize(g_cut));
           s_difference     = std::max(s_difference, (s_ref - s_cut).norm());
           s_max            = std::max(s_max, s_ref.norm());
         }

@@ -82,7 +82,7 @@ namespace
     Loads<dim> loads;
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
-        const auto    &mesh   = blocks[b]->triangulation;
+        const auto    &mesh   = blocks[b]->get_triangulation();
         const double   volume = GridTools::volume(mesh);
         Tensor<1, dim> load;
         load[dim - 1] = -model.unit_weight * volume;

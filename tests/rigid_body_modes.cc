@@ -6,9 +6,9 @@
 
 #include <mbfem/block/block.h>
 #include <mbfem/block/boundary_conditions.h>
+#include <mbfem/mesh/mesh.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/grid/grid_generator.h>
 
 #include <iostream>
 
@@ -29,11 +29,15 @@ check(const std::string &supports)
   mbfem::DiscretisationParameters discretisation;
   discretisation.degree         = 2;
   discretisation.mapping_degree = 2;
-  mbfem::Block<dim> block(mbfem::Material(1., 0.3),
+  mbfem::Block<dim>     block(mbfem::Material(1., 0.3),
                           discretisation,
                           "Amesos_Klu");
-  GridGenerator::hyper_cube(block.triangulation, 0., 1., true);
-  block.triangulation.refine_global(1);
+  mbfem::MeshParameters mesh;
+  mesh.source              = "generator";
+  mesh.generator_name      = "hyper_cube";
+  mesh.generator_arguments = "0:1:true";
+  mesh.initial_refinement  = 1;
+  block.create_mesh(mesh);
   block.setup_system(bc);
 
   const auto free_modes = block.free_rigid_body_modes();

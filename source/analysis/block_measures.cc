@@ -40,9 +40,9 @@ namespace mbfem
     AssertDimension(exact_stress.n_components, dim * dim);
     const Quadrature<dim> quadrature =
       (block.is_plastic() ? block.state_quadrature() :
-                            QGauss<dim>(block.fe.degree + 3));
-    FEValues<dim>                        fe_values(block.mapping,
-                            block.fe,
+                            QGauss<dim>(block.get_fe().degree + 3));
+    FEValues<dim>                        fe_values(block.get_mapping(),
+                            block.get_fe(),
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
@@ -52,12 +52,12 @@ namespace mbfem
     Vector<double>                       u_exact(dim), s_exact(dim * dim);
 
     double u_error2 = 0., u_norm2 = 0., s_error2 = 0., s_norm2 = 0.;
-    for (const auto &cell : block.dof_handler.active_cell_iterators())
+    for (const auto &cell : block.get_dof_handler().active_cell_iterators())
       {
         fe_values.reinit(cell);
-        fe_values[displacement].get_function_values(block.solution, u);
-        fe_values[displacement].get_function_symmetric_gradients(block.solution,
-                                                                 eps);
+        fe_values[displacement].get_function_values(block.get_solution(), u);
+        fe_values[displacement].get_function_symmetric_gradients(
+          block.get_solution(), eps);
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             const Point<dim> &x = fe_values.quadrature_point(q);
@@ -92,17 +92,17 @@ namespace mbfem
   double
   max_displacement(const Block<dim> &block)
   {
-    const auto                          &fe   = block.fe;
+    const auto                          &fe   = block.get_fe();
     double                               max2 = 0.;
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    for (const auto &cell : block.dof_handler.active_cell_iterators())
+    for (const auto &cell : block.get_dof_handler().active_cell_iterators())
       {
         cell->get_dof_indices(dof_indices);
         for (unsigned int v = 0; v < fe.base_element(0).n_dofs_per_cell(); ++v)
           {
             double norm2 = 0.;
             for (unsigned int d = 0; d < dim; ++d)
-              norm2 += Utilities::fixed_power<2>(block.solution(
+              norm2 += Utilities::fixed_power<2>(block.get_solution()(
                 dof_indices[fe.component_to_system_index(d, v)]));
             max2 = std::max(max2, norm2);
           }
@@ -116,18 +116,18 @@ namespace mbfem
   double
   max_von_mises_stress(const Block<dim> &block)
   {
-    FEValues<dim>                        fe_values(block.mapping,
-                            block.fe,
+    FEValues<dim>                        fe_values(block.get_mapping(),
+                            block.get_fe(),
                             block.state_quadrature(),
                             update_gradients | update_quadrature_points);
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> eps(fe_values.n_quadrature_points);
     double                               result = 0.;
-    for (const auto &cell : block.dof_handler.active_cell_iterators())
+    for (const auto &cell : block.get_dof_handler().active_cell_iterators())
       {
         fe_values.reinit(cell);
-        fe_values[displacement].get_function_symmetric_gradients(block.solution,
-                                                                 eps);
+        fe_values[displacement].get_function_symmetric_gradients(
+          block.get_solution(), eps);
         for (const unsigned int q : fe_values.quadrature_point_indices())
           result = std::max(result,
                             von_mises_stress(

@@ -17,6 +17,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <utility>
 
 namespace mbfem
 {
@@ -57,10 +58,10 @@ namespace mbfem
                                        parameters.linear_solver.package,
                                        id));
         Block<dim> &block = *blocks.back();
-        extract_block(mesh, id, block.triangulation);
-        check_cell_geometry(block.triangulation,
-                            block.mapping,
-                            block.fe.degree,
+        block.extract_mesh(mesh);
+        check_cell_geometry(block.get_triangulation(),
+                            block.get_mapping(),
+                            block.get_fe().degree,
                             block.name());
         block.set_initial_state(&parameters.in_situ_stress,
                                 &parameters.excavation);
@@ -156,15 +157,15 @@ namespace mbfem
                                                  "one elastic block") :
                 std::to_string(blocks.size()) + " blocks")
           << ", " << dim << "D" << (dim == 2 ? " plane strain" : "")
-          << ", FE_Q(" << first.fe.degree << ")^" << dim << ", MappingQ("
-          << first.mapping.get_degree() << ")\n";
+          << ", FE_Q(" << first.get_fe().degree << ")^" << dim << ", MappingQ("
+          << first.get_mapping().get_degree() << ")\n";
     for (const auto &block : blocks)
       {
         pcout << (blocks.size() == 1 ? "" : "  " + block->name() + ":\n")
-              << "  cells: " << block->triangulation.n_active_cells()
+              << "  cells: " << block->get_triangulation().n_active_cells()
               << ", degrees of freedom: " << block->n_dofs() << "\n"
-              << "  E = " << block->material.youngs_modulus
-              << ", nu = " << block->material.poissons_ratio << "\n";
+              << "  E = " << block->get_material().youngs_modulus
+              << ", nu = " << block->get_material().poissons_ratio << "\n";
         const auto &free_modes = block->free_rigid_body_modes();
         if (!free_modes.empty())
           {
@@ -303,7 +304,7 @@ namespace mbfem
             << std::fixed << std::setprecision(1) << contact->misalignment()
             << " degrees" << std::defaultfloat << std::setprecision(6) << "\n";
     for (const auto &block : blocks)
-      AssertThrow(std::isfinite(block->solution.l2_norm()),
+      AssertThrow(std::isfinite(block->get_solution().l2_norm()),
                   ExcMessage(
                     "Increment " + std::to_string(k) +
                     " (t = " + std::to_string(time) +
@@ -332,7 +333,7 @@ namespace mbfem
         TimerOutput::Scope       t(timer, "output");
         std::vector<std::string> files;
         for (const auto &block : blocks)
-          files.push_back(writer->write_block(*block, block->id, k));
+          files.push_back(writer->write_block(*block, block->get_id(), k));
         writer->add_step(time, files);
         if (pair_writer)
           pair_writer->add_step(time, {pair_file});
@@ -663,7 +664,11 @@ namespace mbfem
               blocks[b]->solve(contact->floating_amplitudes(b));
             }
           else
-            contact->block_solution(b, *blocks[b], blocks[b]->solution);
+            {
+              Vector<double> displacement;
+              contact->block_solution(b, *blocks[b], displacement);
+              blocks[b]->set_solution(std::move(displacement));
+            }
         (condensed ? condensed_seconds : monolithic_seconds) +=
           clock.wall_time();
       }

@@ -101,9 +101,9 @@ namespace mbfem
     Block<dim> block(parameters.material,
                      discretisation,
                      parameters.linear_solver.package);
-    create_mesh(mesh, block.triangulation);
+    block.create_mesh(mesh);
     boundary_conditions.check_boundary_ids(
-      boundary_ids_of(block.triangulation));
+      boundary_ids_of(block.get_triangulation()));
     block.setup_system(boundary_conditions);
     block.assemble_stiffness();
     block.factorize();
@@ -120,7 +120,7 @@ namespace mbfem
     const double nan = std::numeric_limits<double>::quiet_NaN();
     return {degree,
             refinement,
-            block.triangulation.n_active_cells(),
+            block.get_triangulation().n_active_cells(),
             static_cast<unsigned int>(block.n_dofs()),
             errors.displacement_relative,
             errors.stress_relative,

@@ -162,9 +162,9 @@ namespace mbfem
     std::vector<Point<dim>> on_supports, on_loads, everywhere;
     for (const auto &block : blocks)
       {
-        collect_points(block->triangulation, &supported, on_supports);
-        collect_points(block->triangulation, &loaded, on_loads);
-        collect_points<dim>(block->triangulation, nullptr, everywhere);
+        collect_points(block->get_triangulation(), &supported, on_supports);
+        collect_points(block->get_triangulation(), &loaded, on_loads);
+        collect_points<dim>(block->get_triangulation(), nullptr, everywhere);
       }
     const std::string bcs = "Boundary conditions/";
     check_finite(*bc.prescribed_displacement,
@@ -344,13 +344,14 @@ namespace mbfem
     std::vector<double>                  tolerance(blocks.size());
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
-        DoFHandler<dim> dof_handler(blocks[b]->triangulation);
-        dof_handler.distribute_dofs(blocks[b]->fe);
+        DoFHandler<dim> dof_handler(blocks[b]->get_triangulation());
+        dof_handler.distribute_dofs(blocks[b]->get_fe());
         points[b].resize(dof_handler.n_dofs());
-        DoFTools::map_dofs_to_support_points(blocks[b]->mapping,
+        DoFTools::map_dofs_to_support_points(blocks[b]->get_mapping(),
                                              dof_handler,
                                              points[b]);
-        tolerance[b] = 1e-6 * GridTools::diameter(blocks[b]->triangulation);
+        tolerance[b] =
+          1e-6 * GridTools::diameter(blocks[b]->get_triangulation());
       }
 
     for (const auto &[point, mask] : bc.point_supports)

@@ -14,6 +14,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace mbfem
 {
@@ -74,6 +75,24 @@ namespace mbfem
   Block<dim>::name() const
   {
     return "block " + std::to_string(id);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::extract_mesh(const Triangulation<dim> &mesh)
+  {
+    extract_block(mesh, id, triangulation);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::create_mesh(const MeshParameters &parameters)
+  {
+    mbfem::create_mesh(parameters, triangulation);
   }
 
 
@@ -628,6 +647,16 @@ namespace mbfem
 
 
   template <int dim>
+  void
+  Block<dim>::set_solution(Vector<double> &&displacement)
+  {
+    AssertDimension(displacement.size(), dof_handler.n_dofs());
+    solution = std::move(displacement);
+  }
+
+
+
+  template <int dim>
   FullMatrix<double>
   Block<dim>::flexibility(
     const std::vector<types::global_dof_index> &dofs) const
@@ -767,6 +796,69 @@ namespace mbfem
   Block<dim>::n_dofs() const
   {
     return dof_handler.n_dofs();
+  }
+
+
+
+  template <int dim>
+  types::material_id
+  Block<dim>::get_id() const
+  {
+    return id;
+  }
+
+
+
+  template <int dim>
+  const Triangulation<dim> &
+  Block<dim>::get_triangulation() const
+  {
+    return triangulation;
+  }
+
+
+
+  template <int dim>
+  const Material &
+  Block<dim>::get_material() const
+  {
+    return material;
+  }
+
+
+
+  template <int dim>
+  const FESystem<dim> &
+  Block<dim>::get_fe() const
+  {
+    return fe;
+  }
+
+
+
+  template <int dim>
+  const MappingQ<dim> &
+  Block<dim>::get_mapping() const
+  {
+    return mapping;
+  }
+
+
+
+  template <int dim>
+  const DoFHandler<dim> &
+  Block<dim>::get_dof_handler() const
+  {
+    return dof_handler;
+  }
+
+
+
+  template <int dim>
+  const Vector<double> &
+  Block<dim>::get_solution() const
+  {
+    return solution;
   }
 
 

@@ -916,7 +916,7 @@ namespace mbfem
             for (const auto &node : side.nodes)
               for (unsigned int c = 0; c < dim; ++c)
                 d[c] += sign * node.weight *
-                        blocks[side.block]->solution(node.dofs[c]);
+                        blocks[side.block]->get_solution()(node.dofs[c]);
           }
         for (unsigned int i = 0; i < dim; ++i)
           external_displacement(k * dim + i) = pair.frame[i] * d;

@@ -27,7 +27,7 @@ namespace mbfem
       const AffineConstraints<double> &constraints =
         block.get_physical_constraints();
       DynamicSparsityPattern dsp(block.n_dofs());
-      DoFTools::make_sparsity_pattern(block.dof_handler,
+      DoFTools::make_sparsity_pattern(block.get_dof_handler(),
                                       dsp,
                                       constraints,
                                       false);

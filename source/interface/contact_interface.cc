@@ -298,11 +298,11 @@ namespace mbfem
                   const types::boundary_id         boundary_id,
                   std::vector<InterfaceNode<dim>> &nodes)
     {
-      const auto &fe = block.fe;
+      const auto &fe = block.get_fe();
       // Gauss-Lobatto points are FE_Q's support points: the quadrature
       // weight at a node is its lumped share of the face.
       const QGaussLobatto<dim - 1>         quadrature(fe.degree + 1);
-      FEFaceValues<dim>                    fe_face_values(block.mapping,
+      FEFaceValues<dim>                    fe_face_values(block.get_mapping(),
                                        fe,
                                        quadrature,
                                        update_values | update_JxW_values |
@@ -311,7 +311,7 @@ namespace mbfem
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
       std::map<types::global_dof_index, unsigned int> node_of_dof;
 
-      for (const auto &cell : block.dof_handler.active_cell_iterators())
+      for (const auto &cell : block.get_dof_handler().active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
               cell->face(f)->boundary_id() == boundary_id)
@@ -412,7 +412,7 @@ namespace mbfem
           for (unsigned int b = 0; b < blocks.size(); ++b)
             if (!declaration.by_blocks)
               collect_nodes(*blocks[b], b, own, side[s]);
-            else if (blocks[b]->id == own)
+            else if (blocks[b]->get_id() == own)
               collect_nodes(*blocks[b],
                             b,
                             interface_boundary_id(other),
@@ -588,16 +588,17 @@ namespace mbfem
       // not, and the faces it leaves are free surfaces.
       std::set<unsigned int> ids;
       for (const auto &block : blocks)
-        ids.insert(block->id);
+        ids.insert(block->get_id());
       std::set<std::pair<unsigned int, unsigned int>> neighbours;
       for (const auto &block : blocks)
-        for (const auto id : boundary_ids_of(block->triangulation))
+        for (const auto id : boundary_ids_of(block->get_triangulation()))
           if (id >= interface_boundary_id(0) &&
               ids.count(id - interface_boundary_id(0)) > 0)
             {
               const unsigned int other = id - interface_boundary_id(0);
-              neighbours.emplace(std::min<unsigned int>(block->id, other),
-                                 std::max<unsigned int>(block->id, other));
+              neighbours.emplace(std::min<unsigned int>(block->get_id(), other),
+                                 std::max<unsigned int>(block->get_id(),
+                                                        other));
             }
       std::vector<InterfaceDeclaration> found;
       for (const auto &[a, b] : neighbours)
@@ -766,7 +767,7 @@ namespace mbfem
 
     double size = 0.;
     for (const auto &block : blocks)
-      size = std::max(size, GridTools::diameter(block->triangulation));
+      size = std::max(size, GridTools::diameter(block->get_triangulation()));
     const double coincident = 1e-8 * size;
 
     std::vector<ContactPair<dim>> pairs;

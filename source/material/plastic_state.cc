@@ -44,11 +44,12 @@ namespace mbfem
   {
     if (!parameters.enabled)
       return;
-    mohr_coulomb = std::make_unique<MohrCoulomb>(parameters, block.material);
-    two_mu       = 2. * block.material.mu();
-    n_points_per_cell = block.state_quadrature().size();
-    const std::size_t n =
-      block.triangulation.n_active_cells() * std::size_t(n_points_per_cell);
+    mohr_coulomb =
+      std::make_unique<MohrCoulomb>(parameters, block.get_material());
+    two_mu              = 2. * block.get_material().mu();
+    n_points_per_cell   = block.state_quadrature().size();
+    const std::size_t n = block.get_triangulation().n_active_cells() *
+                          std::size_t(n_points_per_cell);
     plastic_strain_committed.assign(n, SymmetricTensor<2, 3>());
     plastic_strain.assign(n, SymmetricTensor<2, 3>());
     plastic_strain_load.assign(n, SymmetricTensor<2, 3>());
@@ -151,19 +152,19 @@ namespace mbfem
     PlasticUpdate result;
     if (!mohr_coulomb)
       return result;
-    FEValues<dim>                        fe_values(block.mapping,
-                            block.fe,
+    FEValues<dim>                        fe_values(block.get_mapping(),
+                            block.get_fe(),
                             block.state_quadrature(),
                             update_gradients | update_quadrature_points |
                               update_JxW_values);
     const FEValuesExtractors::Vector     displacement(0);
     const InSituStress                  *in_situ = block.get_in_situ_stress();
     std::vector<SymmetricTensor<2, dim>> eps(fe_values.n_quadrature_points);
-    for (const auto &cell : block.dof_handler.active_cell_iterators())
+    for (const auto &cell : block.get_dof_handler().active_cell_iterators())
       {
         fe_values.reinit(cell);
-        fe_values[displacement].get_function_symmetric_gradients(block.solution,
-                                                                 eps);
+        fe_values[displacement].get_function_symmetric_gradients(
+          block.get_solution(), eps);
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             const std::size_t index =

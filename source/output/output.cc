@@ -225,28 +225,29 @@ namespace mbfem
                             const unsigned int step) const
   {
     DataOut<dim> data_out;
-    data_out.attach_dof_handler(block.dof_handler);
+    data_out.attach_dof_handler(block.get_dof_handler());
 
     const std::vector<std::string> names(dim, "displacement");
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
                      DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(block.solution,
+    data_out.add_data_vector(block.get_solution(),
                              names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
     std::vector<SymmetricTensor<2, 3>> plastic_stress;
     std::vector<double>                yielded, plastic_strain;
-    block.plastic_state().cell_fields(block.triangulation.n_active_cells(),
-                                      plastic_stress,
-                                      yielded,
-                                      plastic_strain);
-    const StressPostprocessor<dim> stress(block.material,
+    block.plastic_state().cell_fields(
+      block.get_triangulation().n_active_cells(),
+      plastic_stress,
+      yielded,
+      plastic_strain);
+    const StressPostprocessor<dim> stress(block.get_material(),
                                           block.get_in_situ_stress(),
                                           plastic_stress,
-                                          &block.mapping,
-                                          block.fe.degree);
-    data_out.add_data_vector(block.solution, stress);
+                                          &block.get_mapping(),
+                                          block.get_fe().degree);
+    data_out.add_data_vector(block.get_solution(), stress);
     Vector<float> yielded_cells(yielded.begin(), yielded.end());
     Vector<float> plastic_cells(plastic_strain.begin(), plastic_strain.end());
     if (block.is_plastic())
@@ -257,12 +258,12 @@ namespace mbfem
         data_out.add_data_vector(plastic_cells, "plastic_strain");
       }
 
-    Vector<float> block_id(block.triangulation.n_active_cells());
+    Vector<float> block_id(block.get_triangulation().n_active_cells());
     block_id = static_cast<float>(block_index);
     data_out.add_data_vector(block_id, "block");
 
-    const unsigned int degree = block.fe.degree;
-    data_out.build_patches(block.mapping,
+    const unsigned int degree = block.get_fe().degree;
+    data_out.build_patches(block.get_mapping(),
                            degree,
                            DataOut<dim>::curved_inner_cells);
 

@@ -8,6 +8,7 @@
 #include <mbfem/material/material.h>
 #include <mbfem/material/plastic_state.h>
 #include <mbfem/material/plasticity.h>
+#include <mbfem/mesh/mesh.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
@@ -73,8 +74,26 @@ namespace mbfem
           const types::material_id        id = 0);
 
     /**
-     * Distributes DoFs on triangulation (filled by the caller), builds the
-     * constraints, finds the free rigid-body modes and pins them.
+     * Takes the block's mesh from the whole @p mesh: its cells of material
+     * id get_id(), with the faces it shares with other blocks marked
+     * (extract_block()). Built in place, as nothing outside the block may
+     * change its mesh.
+     */
+    void
+    extract_mesh(const Triangulation<dim> &mesh);
+
+    /**
+     * Builds the mesh of @p parameters as the block's mesh: for a problem
+     * of one block (the order study, unit tests). Built in place, so that
+     * a generator's manifolds that refer to their triangulation stay valid.
+     */
+    void
+    create_mesh(const MeshParameters &parameters);
+
+    /**
+     * Distributes DoFs on the mesh (from extract_mesh() or create_mesh()),
+     * builds the constraints, finds the free rigid-body modes and pins
+     * them.
      */
     void
     setup_system(const BoundaryConditions<dim> &boundary_conditions);
@@ -134,6 +153,14 @@ namespace mbfem
      */
     void
     solve(const std::vector<double> &alpha = {});
+
+    /**
+     * Replaces the solution by @p displacement (n_dofs() values, its
+     * constraints distributed) solved for outside the block: the monolithic
+     * system's, which has the block's DoFs among its unknowns.
+     */
+    void
+    set_solution(Vector<double> &&displacement);
 
     /**
      * Displacements at @p dofs under a unit force at each of @p dofs in
@@ -241,16 +268,47 @@ namespace mbfem
     std::vector<Point<dim>>
     support_points() const;
 
+    /** The block's id: the material id of its cells in the whole mesh. */
+    types::material_id
+    get_id() const;
+
+    /** The block's own mesh (coarse cells and the refinement). */
+    const Triangulation<dim> &
+    get_triangulation() const;
+
+    /** The elastic constants and weight of the block. */
+    const Material &
+    get_material() const;
+
+    /** FE_Q(p)^dim of the displacement. */
+    const FESystem<dim> &
+    get_fe() const;
+
+    /** MappingQ of the geometry (curved faces stay curved). */
+    const MappingQ<dim> &
+    get_mapping() const;
+
+    /** The DoFs of get_fe() on get_triangulation(). */
+    const DoFHandler<dim> &
+    get_dof_handler() const;
+
+    /**
+     * The displacement of the last solve() or set_solution(): the
+     * response u_F to the load (condensed contact) or the total
+     * displacement with the contact forces.
+     */
+    const Vector<double> &
+    get_solution() const;
+
+  private:
     const types::material_id id;
     Triangulation<dim>       triangulation;
     const Material           material;
     const FESystem<dim>      fe;
     const MappingQ<dim>      mapping;
     DoFHandler<dim>          dof_handler;
+    Vector<double>           solution;
 
-    Vector<double> solution;
-
-  private:
     /**
      * Cell stiffness from @p fe_values (already reinit'ed on the cell);
      * shared by the matrix and the load assembly.
