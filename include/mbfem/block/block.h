@@ -76,8 +76,8 @@ namespace mbfem
     /**
      * Takes the block's mesh from the whole @p mesh: its cells of material
      * id get_id(), with the faces it shares with other blocks marked
-     * (extract_block()). Built in place, as nothing outside the block may
-     * change its mesh.
+     * (extract_block()): how a multi-body problem gives each block its
+     * mesh, from the block's own id.
      */
     void
     extract_mesh(const Triangulation<dim> &mesh);
