@@ -903,11 +903,9 @@ namespace mbfem
 
 
   template <int dim>
-  unsigned int
-  ContactSolver<dim>::solve_increment(
-    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
-    const unsigned int                              increment,
-    const bool                                      from_last_solve)
+  void
+  ContactSolver<dim>::set_increment_data(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks)
   {
     // Data of this increment: Delta_F in the frames (condensed) or the
     // loads of the monolithic system, and F_e.
@@ -936,6 +934,18 @@ namespace mbfem
         for (unsigned int a = 0; a < resultant.size(); ++a)
           external_resultant[alpha_offset[b] + a] = resultant[a];
       }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactSolver<dim>::solve_increment(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+    const unsigned int                              increment,
+    const bool                                      from_last_solve)
+  {
+    set_increment_data(blocks);
 
     // The fast iteration first: it concludes nearly every increment, in a
     // few solves. Its answer is refused where the states leave a

@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <iostream>
 
 // The semismooth Newton method of the contact state iteration
 // (doc/state_iteration.md, doc/decisions.md): the third method, tried where
@@ -43,6 +41,10 @@ namespace mbfem
     constexpr double armijo = 1e-4;
     /** Step halvings of the line search before a step is taken anyway. */
     constexpr unsigned int max_halvings = 30;
+    /** A Newton step is cut to this times the larger of |u| and the data. */
+    constexpr double trust_factor = 1e3;
+    /** Levenberg-Marquardt's smallest damping (relative to diag J^T J). */
+    constexpr double initial_damping = 1e-10;
     /**
      * A slipping pair's force may exceed its strength by this times the
      * largest force (the fast iteration's Newton on the slip direction
@@ -103,8 +105,8 @@ namespace mbfem
   ContactSolver<dim>::newton_pair_residual(const unsigned int k,
                                            NewtonSystem      &system) const
   {
-    const auto        &pair = contact_pairs[k];
-    const unsigned int r0   = k * dim;
+    const auto           &pair = contact_pairs[k];
+    const unsigned int    r0   = k * dim;
     const Vector<double> &u = system.u, &d = system.d;
     Vector<double>       &F = system.residual;
     for (unsigned int e = 0; e < dim; ++e)
@@ -119,8 +121,8 @@ namespace mbfem
         for (unsigned int e = 0; e < dim; ++e)
           if (!held[k][e])
             {
-              F(r0 + e) = (e == 0 ? gap : d(r0 + e) -
-                                            committed_displacement[k][e]);
+              F(r0 + e) =
+                (e == 0 ? gap : d(r0 + e) - committed_displacement[k][e]);
               system.add_displacement(r0 + e, r0 + e, 1.);
             }
         return;
@@ -128,8 +130,8 @@ namespace mbfem
 
     // Normal: closed (g = 0) or open (r_N = 0); xi the augmented normal
     // force that sets the friction disc's radius.
-    const bool bilateral = newton_bilateral(k, system.broken);
-    double     xi        = 0.;
+    const bool bilateral  = newton_bilateral(k, system.broken);
+    double     xi         = 0.;
     bool       xi_has_gap = false;
     if (!held[k][0])
       {
@@ -198,8 +200,8 @@ namespace mbfem
             for (unsigned int l = 1; l < dim; ++l)
               if (!held[k][l])
                 {
-                  const double m = ((e == l ? 1. : 0.) - n[e] * n[l]) * R /
-                                   z_norm;
+                  const double m =
+                    ((e == l ? 1. : 0.) - n[e] * n[l]) * R / z_norm;
                   system.add_unit(row, r0 + l, -m);
                   system.add_displacement(row, r0 + l, m);
                 }
@@ -255,56 +257,127 @@ namespace mbfem
   ContactSolver<dim>::newton_solve(NewtonSystem &system,
                                    unsigned int &iterations) const
   {
-    const unsigned int       n_r = n_pairs * dim;
-    const unsigned int       n   = n_r + n_alpha_total;
+    const unsigned int n_r = n_pairs * dim;
+    // The scale of the residual and of a step: the increment's data, not
+    // the iterate (a near-singular step can make the iterate huge).
+    double reference = 1e-300;
+    for (unsigned int i = 0; i < n_r; ++i)
+      reference = std::max(reference, std::abs(external_displacement(i)));
+    for (const double f : external_resultant)
+      reference = std::max(reference, flexibility_scale * std::abs(f));
+    for (const auto &pair : contact_pairs)
+      reference = std::max(reference, pair.initial_gap);
+
     LAPACKFullMatrix<double> jacobian;
+    double                   damping = internal::initial_damping;
     for (unsigned int it = 0; it < internal::newton_max_iterations; ++it)
       {
-        system.jacobian     = &jacobian;
-        const double merit  = newton_residual(system);
-        system.jacobian     = nullptr;
-        double reference    = 1e-300;
-        for (unsigned int i = 0; i < n_r; ++i)
-          reference = std::max({reference,
-                                std::abs(system.u(i)),
-                                std::abs(system.d(i))});
-        for (const double f : external_resultant)
-          reference = std::max(reference, flexibility_scale * std::abs(f));
-        if (std::getenv("MBFEM_NEWTON_DEBUG"))
-          std::cerr << "newton " << it << " |F| " << system.residual.linfty_norm() << " ref " << reference << std::endl;
+        system.jacobian    = &jacobian;
+        const double merit = newton_residual(system);
+        system.jacobian    = nullptr;
         if (system.residual.linfty_norm() <=
             internal::newton_tolerance * reference)
           return true;
         ++iterations;
+        // Newton's step where it decreases 1/2 |F|^2 (with backtracking,
+        // and no longer than the trust length), else Levenberg and
+        // Marquardt's, which always can.
+        const LAPACKFullMatrix<double> copy = jacobian;
+        const double                   trust =
+          internal::trust_factor * std::max(reference, system.u.linfty_norm());
+        if (!newton_line_search(system, jacobian, merit, trust) &&
+            !levenberg_marquardt_step(system, copy, merit, damping))
+          return false;
+      }
+    return false;
+  }
 
-        Vector<double> step(system.residual);
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::newton_line_search(NewtonSystem             &system,
+                                         LAPACKFullMatrix<double> &jacobian,
+                                         const double              merit,
+                                         const double              trust) const
+  {
+    Vector<double> step(system.residual);
+    step *= -1.;
+    try
+      {
+        jacobian.compute_lu_factorization();
+      }
+    catch (const LACExceptions::ExcSingular &)
+      {
+        return false;
+      }
+    jacobian.solve(step);
+    if (!std::isfinite(step.l2_norm()))
+      return false;
+    if (step.linfty_norm() > trust)
+      step *= trust / step.linfty_norm();
+
+    const Vector<double> start = system.u;
+    double               t     = 1.;
+    for (unsigned int h = 0; h <= internal::max_halvings; ++h, t *= 0.5)
+      {
+        system.u = start;
+        system.u.add(t, step);
+        if (newton_residual(system) <= (1. - 2. * internal::armijo * t) * merit)
+          return true;
+      }
+    system.u = start;
+    return false;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::levenberg_marquardt_step(
+    NewtonSystem                   &system,
+    const LAPACKFullMatrix<double> &jacobian,
+    const double                    merit,
+    double                         &damping) const
+  {
+    // (J^T J + lambda diag(J^T J)) step = -J^T F, lambda raised tenfold
+    // until the merit decreases and lowered after a success.
+    const unsigned int       n = system.u.size();
+    LAPACKFullMatrix<double> normal(n, n);
+    jacobian.Tmmult(normal, jacobian);
+    Vector<double> gradient(n);
+    jacobian.Tvmult(gradient, system.residual);
+    const Vector<double> start = system.u;
+    for (unsigned int attempt = 0; attempt < internal::max_halvings; ++attempt)
+      {
+        LAPACKFullMatrix<double> matrix = normal;
+        for (unsigned int i = 0; i < n; ++i)
+          matrix(i, i) += damping * std::max(normal(i, i), 1e-300);
+        Vector<double> step(gradient);
         step *= -1.;
+        bool solved = true;
         try
           {
-            jacobian.compute_lu_factorization();
+            matrix.compute_lu_factorization();
+            matrix.solve(step);
           }
         catch (const LACExceptions::ExcSingular &)
           {
-            return false;
+            solved = false;
           }
-        jacobian.solve(step);
-        if (!std::isfinite(step.l2_norm()))
-          return false;
-
-        // Backtracking on 1/2 |F|^2; a step that never decreases it is
-        // taken anyway (the merit is not smooth), at the shortest length.
-        const Vector<double> start = system.u;
-        double               t     = 1.;
-        for (unsigned int h = 0; h <= internal::max_halvings; ++h, t *= 0.5)
+        if (solved && std::isfinite(step.l2_norm()))
           {
             system.u = start;
-            system.u.add(t, step);
-            if (newton_residual(system) <=
-                (1. - 2. * internal::armijo * t) * merit)
-              break;
+            system.u += step;
+            if (newton_residual(system) < merit)
+              {
+                damping = std::max(damping / 10., internal::initial_damping);
+                return true;
+              }
           }
-        (void)n;
+        damping *= 10.;
       }
+    system.u = start;
     return false;
   }
 
@@ -325,9 +398,9 @@ namespace mbfem
                                      held[k].end(),
                                      [](bool h) { return h; }))
           continue;
-        const double gap = pair.initial_gap + system.d(r0);
-        const double w   = held[k][0] ? 0. : system.u(r0) - gap;
-        const bool   bilateral = newton_bilateral(k, system.broken);
+        const double gap             = pair.initial_gap + system.d(r0);
+        const double w               = held[k][0] ? 0. : system.u(r0) - gap;
+        const bool   bilateral       = newton_bilateral(k, system.broken);
         trial.tensile_slip[k]        = false;
         trial.direction_stiffness[k] = 0.;
         if (!bilateral && w <= 0.)
@@ -354,7 +427,7 @@ namespace mbfem
           }
         trial.state[k] = ContactState::slip;
         const Tensor<1, dim> direction =
-          v.norm() > 0. ? Tensor<1, dim>(v / v.norm()) :
+          v.norm() > 0.   ? Tensor<1, dim>(v / v.norm()) :
           r_t.norm() > 0. ? Tensor<1, dim>(-r_t / r_t.norm()) :
                             trial.slip_direction[k];
         trial.slip_direction[k] = direction;
@@ -444,8 +517,6 @@ namespace mbfem
 
     const FastOutcome polish = fast_iteration(newton_states(system), increment);
     iterations += polish.iterations;
-    if (std::getenv("MBFEM_NEWTON_DEBUG"))
-      std::cerr << "polish " << polish.converged << " " << polish.failure << " mech " << mechanism(current) << std::endl;
     if (!polish.converged)
       return false;
     // In 3D a block can be in equilibrium with every pair slipping below
@@ -462,8 +533,9 @@ namespace mbfem
 
   template <int dim>
   bool
-  ContactSolver<dim>::forces_within_strength(const Trial          &trial,
-                                             const Vector<double> &solution) const
+  ContactSolver<dim>::forces_within_strength(
+    const Trial          &trial,
+    const Vector<double> &solution) const
   {
     double force_scale = 1e-300;
     for (unsigned int i = 0; i < n_pairs * dim; ++i)
@@ -492,10 +564,10 @@ namespace mbfem
 
   // The members defined in this file (the class itself is instantiated in
   // contact_solver.cc).
-#define MBFEM_INSTANTIATE(dim)                                               \
-  template bool ContactSolver<dim>::semismooth_newton(unsigned int,          \
-                                                      unsigned int &);     \
-  template bool ContactSolver<dim>::forces_within_strength(                  \
+#define MBFEM_INSTANTIATE(dim)                                         \
+  template bool ContactSolver<dim>::semismooth_newton(unsigned int,    \
+                                                      unsigned int &); \
+  template bool ContactSolver<dim>::forces_within_strength(            \
     const Trial &, const Vector<double> &) const;
   MBFEM_INSTANTIATE(2)
   MBFEM_INSTANTIATE(3)

@@ -424,6 +424,14 @@ namespace mbfem
     load_path(const unsigned int increment);
 
     /**
+     * solve_increment()'s data: Delta_F in the pairs' frames (condensed;
+     * from each block's response u_F in its solution) or the monolithic
+     * system's loads, and the floating blocks' load resultants F_e.
+     */
+    void
+    set_increment_data(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
+
+    /**
      * solve_increment() where the load path failed: the semismooth Newton
      * method at the increment's full load; true if it concluded.
      */
@@ -444,7 +452,8 @@ namespace mbfem
 
     /** Pair @p k is closed by its strength until it breaks. */
     bool
-    newton_bilateral(const unsigned int k, const std::vector<bool> &broken) const;
+    newton_bilateral(const unsigned int       k,
+                     const std::vector<bool> &broken) const;
 
     /** The rows of pair @p k: held directions, normal, then tangential. */
     void
@@ -464,6 +473,24 @@ namespace mbfem
     /** Damped Newton on one system; false if it stalls or is singular. */
     bool
     newton_solve(NewtonSystem &system, unsigned int &iterations) const;
+
+    /**
+     * newton_solve()'s step: Newton's direction from the Jacobian (which
+     * it factorises), cut to @p trust, with backtracking; false if the
+     * Jacobian is singular or no length decreases 1/2 |F|^2.
+     */
+    bool
+    newton_line_search(NewtonSystem             &system,
+                       LAPACKFullMatrix<double> &jacobian,
+                       const double              merit,
+                       const double              trust) const;
+
+    /** newton_solve()'s fallback step: Levenberg-Marquardt. */
+    bool
+    levenberg_marquardt_step(NewtonSystem                   &system,
+                             const LAPACKFullMatrix<double> &jacobian,
+                             const double                    merit,
+                             double                         &damping) const;
 
     /** The states (and slip directions) of the Newton answer. */
     Trial
