@@ -15,8 +15,9 @@ run: the exit code and what it means,
   error            exit 1: anything else (also an undecided certificate)
 
 the state iterations summed over the increments, how many increments the
-load path concluded (the fast iteration alone did not), how many step
-halvings were tried, the wall time and the first line of the message.
+load path and the semismooth Newton method concluded (P/N; the fast
+iteration alone did not), how many step halvings were tried, the wall time
+and the first line of the message.
 Below the limit (lambda < 1) 'converged' is expected; above it
 'certified-none', except where a model's statics (LP) limit lies above its
 closed form (the 3D wedge: 1.3737 against Hoek and Bray's 1.3249), where
@@ -210,16 +211,19 @@ def write_case(work, case, lam):
 
 
 def summarise(stdout, stderr):
-    """(iterations summed, increments by the load path, halvings, the
-    certificate's strength factor or None, first message line, every
-    message line)."""
-    iterations = path = halvings = 0
+    """(iterations summed, increments concluded by the load path and by
+    the semismooth Newton method as 'P/N', halvings, the certificate's
+    strength factor or None, first message line, every message line)."""
+    iterations = halvings = 0
+    concluded = {"load path": 0, "semismooth Newton": 0}
     for line in stdout.splitlines():
         m = re.match(r"\s*increment \d+/\d+, t = [^:]*: (\d+) iteration"
-                     r"\(s\)( \(fast \d+, load path \d+\))?", line)
+                     r"\(s\)( \(fast \d+, (load path|semismooth Newton) "
+                     r"\d+\))?", line)
         if m:
             iterations += int(m.group(1))
-            path += m.group(2) is not None
+            if m.group(3):
+                concluded[m.group(3)] += 1
         halvings += "failed (" in line and "halving" in line
     m = re.search(r"strength factor ([0-9.]+)|divided by up to ([0-9.]+)",
                   stderr)
@@ -229,6 +233,7 @@ def summarise(stdout, stderr):
         if "Load increment" in line or "Statics certificate" in line:
             message = line.strip()
             break
+    path = "%d/%d" % (concluded["load path"], concluded["semismooth Newton"])
     return iterations, path, halvings, strength, message, stderr
 
 
@@ -278,11 +283,11 @@ def main():
     os.makedirs(work, exist_ok=True)
     if args.markdown:
         print("| case | lambda | F | exit | result | iterations | "
-              "load-path increments | halvings | LP limit | s | message |")
+              "increments by load path/Newton | halvings | LP limit | s | message |")
         print("|---|---|---|---|---|---|---|---|---|---|---|")
     else:
         print("%-24s %7s %8s %4s %-14s %5s %4s %4s %8s %7s  %s" % (
-            "case", "lambda", "F", "exit", "result", "iter", "path", "halv",
+            "case", "lambda", "F", "exit", "result", "iter", "P/N", "halv",
             "LP", "seconds", "first message"))
     wrong = 0
     start = time.time()
@@ -302,10 +307,10 @@ def main():
                    iterations, path, halvings, lp, seconds,
                    (note + " " if note else "") + message[:100])
             if args.markdown:
-                print("| %s | %.4f | %.5f | %d | %s | %d | %d | %d | %s | "
+                print("| %s | %.4f | %.5f | %d | %s | %d | %s | %d | %s | "
                       "%.1f | %s |" % row, flush=True)
             else:
-                print("%-24s %7.4f %8.5f %4d %-14s %5d %4d %4d %8s %7.1f  %s"
+                print("%-24s %7.4f %8.5f %4d %-14s %5d %4s %4d %8s %7.1f  %s"
                       % row, flush=True)
     print("%d run(s) differ from the limit's verdict; %.0f s in all; work "
           "folder %s" % (wrong, time.time() - start, work))

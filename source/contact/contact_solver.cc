@@ -40,7 +40,15 @@ namespace mbfem
   std::string
   to_string(const StateMethod method)
   {
-    return method == StateMethod::fast ? "fast" : "load path";
+    switch (method)
+      {
+        case StateMethod::fast:
+          return "fast";
+        case StateMethod::load_path:
+          return "load path";
+        default:
+          return "semismooth Newton";
+      }
   }
 
 
@@ -895,11 +903,9 @@ namespace mbfem
 
 
   template <int dim>
-  unsigned int
-  ContactSolver<dim>::solve_increment(
-    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
-    const unsigned int                              increment,
-    const bool                                      from_last_solve)
+  void
+  ContactSolver<dim>::set_increment_data(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks)
   {
     // Data of this increment: Delta_F in the frames (condensed) or the
     // loads of the monolithic system, and F_e.
@@ -928,6 +934,18 @@ namespace mbfem
         for (unsigned int a = 0; a < resultant.size(); ++a)
           external_resultant[alpha_offset[b] + a] = resultant[a];
       }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactSolver<dim>::solve_increment(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+    const unsigned int                              increment,
+    const bool                                      from_last_solve)
+  {
+    set_increment_data(blocks);
 
     // The fast iteration first: it concludes nearly every increment, in a
     // few solves. Its answer is refused where the states leave a
@@ -956,13 +974,46 @@ namespace mbfem
     catch (const Exceptions::ExcIncrementNotConverged &)
       {
         // The path did not conclude (in 3D it can pivot in a cycle at one
-        // load): where the fast iteration had met a singular trial, its
-        // verdict stands, as before the path existed.
+        // load; from zero load every event is at s = 0+). The semismooth
+        // Newton method next; if it fails too, where the fast iteration had
+        // met a singular trial, its verdict stands, as before the path
+        // existed.
+        if (rescued_by_newton(increment))
+          return fast_iterations + path_switches;
         AssertThrow(!fast.no_equilibrium,
                     Exceptions::ExcNoEquilibrium(fast.failure));
         throw;
       }
+    catch (const Exceptions::ExcNoEquilibrium &)
+      {
+        // The path stopped at a mechanism: below a limit it can take a
+        // branch that ends there (doc/state_iteration.md); the Newton
+        // method looks for the solution, and the verdict stands if it
+        // finds none.
+        if (rescued_by_newton(increment))
+          return fast_iterations + path_switches;
+        throw;
+      }
     return fast_iterations + path_switches;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::rescued_by_newton(const unsigned int increment)
+  {
+    // The path may have stopped part way: back to the increment's load.
+    set_load_fraction(1.);
+    unsigned int iterations = 0;
+    if (!semismooth_newton(increment, iterations))
+      {
+        set_load_fraction(1.);
+        return false;
+      }
+    method        = StateMethod::semismooth_newton;
+    path_switches = iterations;
+    return true;
   }
 
 

@@ -54,12 +54,16 @@ namespace mbfem
    * continuous parameter s in [0, 1], switching the state of one pair
    * exactly where its condition fails, which ends at s = 1 with the
    * solution or at a mechanism with the fraction of the increment it
-   * reached.
+   * reached. Where both fail, the semismooth Newton method: the increment
+   * as one nonsmooth system (Alart and Curnier's projections for the joint
+   * law), whose answer gives the states that the fast iteration then
+   * solves and checks.
    */
   enum class StateMethod : unsigned char
   {
     fast,
-    load_path
+    load_path,
+    semismooth_newton
   };
 
   std::string
@@ -418,6 +422,92 @@ namespace mbfem
      */
     unsigned int
     load_path(const unsigned int increment);
+
+    /**
+     * solve_increment()'s data: Delta_F in the pairs' frames (condensed;
+     * from each block's response u_F in its solution) or the monolithic
+     * system's loads, and the floating blocks' load resultants F_e.
+     */
+    void
+    set_increment_data(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
+
+    /**
+     * solve_increment() where the load path failed: the semismooth Newton
+     * method at the increment's full load; true if it concluded.
+     */
+    bool
+    rescued_by_newton(const unsigned int increment);
+
+    /**
+     * The semismooth Newton method (source/contact/semismooth_newton.cc),
+     * where the fast iteration and the load path both failed: true if it
+     * found the increment's solution, which is then current; adds its
+     * Newton steps and the polishing fast iteration's to @p iterations.
+     */
+    bool
+    semismooth_newton(const unsigned int increment, unsigned int &iterations);
+
+    /** The unknowns, residual and Jacobian of semismooth_newton(). */
+    struct NewtonSystem;
+
+    /** Pair @p k is closed by its strength until it breaks. */
+    bool
+    newton_bilateral(const unsigned int       k,
+                     const std::vector<bool> &broken) const;
+
+    /** The rows of pair @p k: held directions, normal, then tangential. */
+    void
+    newton_pair_residual(const unsigned int k, NewtonSystem &system) const;
+
+    /** The friction disc's rows of pair @p k, radius from @p xi. */
+    void
+    newton_tangential_residual(const unsigned int k,
+                               const double       xi,
+                               const bool         xi_has_gap,
+                               NewtonSystem      &system) const;
+
+    /** The residual (and Jacobian, if asked) at system.u; 1/2 |F|^2. */
+    double
+    newton_residual(NewtonSystem &system) const;
+
+    /** Damped Newton on one system; false if it stalls or is singular. */
+    bool
+    newton_solve(NewtonSystem &system, unsigned int &iterations) const;
+
+    /**
+     * newton_solve()'s step: Newton's direction from the Jacobian (which
+     * it factorises), cut to @p trust, with backtracking; false if the
+     * Jacobian is singular or no length decreases 1/2 |F|^2.
+     */
+    bool
+    newton_line_search(NewtonSystem             &system,
+                       LAPACKFullMatrix<double> &jacobian,
+                       const double              merit,
+                       const double              trust) const;
+
+    /** newton_solve()'s fallback step: Levenberg-Marquardt. */
+    bool
+    levenberg_marquardt_step(NewtonSystem                   &system,
+                             const LAPACKFullMatrix<double> &jacobian,
+                             const double                    merit,
+                             double                         &damping) const;
+
+    /** The states (and slip directions) of the Newton answer. */
+    Trial
+    newton_states(const NewtonSystem &system) const;
+
+    /**
+     * Whether the forces of @p solution are within every closed pair's
+     * strength of @p trial (tension limit and friction disc), to a
+     * relative 1e-8: with equilibrium, static admissibility.
+     */
+    bool
+    forces_within_strength(const Trial          &trial,
+                           const Vector<double> &solution) const;
+
+    /** The unbroken pair furthest beyond its tensile limit, if any. */
+    unsigned int
+    newton_worst_tension(const NewtonSystem &system) const;
 
     /**
      * load_path(), its start: the load (s = 0) for which the committed

@@ -1,0 +1,575 @@
+#include <mbfem/base/exceptions.h>
+#include <mbfem/contact/contact_solver.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <algorithm>
+#include <cmath>
+
+// The semismooth Newton method of the contact state iteration
+// (doc/state_iteration.md, doc/decisions.md): the third method, tried where
+// the fast iteration and the load path both fail. The increment is written
+// as one nonsmooth system in (rho, alpha), the joint law by Alart and
+// Curnier's projections:
+//
+//   normal:     r_N - max(0, r_N - eps g) = 0      (g the gap),
+//   tangential: r_T - proj_{|r| <= R}(r_T - eps v) = 0,
+//               R = c A + mu max(0, r_N - eps g),  v the slip increment,
+//   floating blocks: P^T r + F_e = 0,
+//
+// solved by Newton's method on its generalised Jacobian with a
+// backtracking line search. In 3D the slip direction is part of the
+// projection, so it may turn freely within the increment (which the load
+// path, holding it over a segment, cannot follow). Its answer gives the
+// states, which the fast iteration then solves and checks, so that the
+// result is the same discrete problem, with the same tolerances, as the
+// other two methods'.
+
+namespace mbfem
+{
+  namespace internal
+  {
+    /** Newton iterations per system, before the method gives up. */
+    constexpr unsigned int newton_max_iterations = 200;
+    /**
+     * Converged where every residual is below this times the largest force
+     * or displacement: far below check()'s 1e-9, so that the states read
+     * from the answer are those the check accepts.
+     */
+    constexpr double newton_tolerance = 1e-11;
+    /** Armijo's sufficient decrease of the line search. */
+    constexpr double armijo = 1e-4;
+    /** Step halvings of the line search before a step is taken anyway. */
+    constexpr unsigned int max_halvings = 30;
+    /** A Newton step is cut to this times the larger of |u| and the data. */
+    constexpr double trust_factor = 1e3;
+    /** Levenberg-Marquardt's smallest damping (relative to diag J^T J). */
+    constexpr double initial_damping = 1e-10;
+    /**
+     * A slipping pair's force may exceed its strength by this times the
+     * largest force (the fast iteration's Newton on the slip direction
+     * ends with |r_T| = R to about 1e-12 relative).
+     */
+    constexpr double strength_tolerance = 1e-8;
+  } // namespace internal
+
+
+
+  template <int dim>
+  struct ContactSolver<dim>::NewtonSystem
+  {
+    /** d = Delta_F + A u, u = (rho * scale, alpha): rows of [C_hat / scale,
+     * P_hat]. */
+    FullMatrix<double> A;
+    /** Pairs broken before or during this increment (history). */
+    std::vector<bool> broken;
+    Vector<double>    u, d, residual;
+    /** The Jacobian, if asked for. */
+    LAPACKFullMatrix<double> *jacobian = nullptr;
+
+    void
+    add_unit(const unsigned int row, const unsigned int column, const double c)
+    {
+      if (jacobian != nullptr)
+        (*jacobian)(row, column) += c;
+    }
+
+    /** The Jacobian's row += c times the derivative of d(source). */
+    void
+    add_displacement(const unsigned int row,
+                     const unsigned int source,
+                     const double       c)
+    {
+      if (jacobian != nullptr)
+        for (unsigned int j = 0; j < A.n(); ++j)
+          (*jacobian)(row, j) += c * A(source, j);
+    }
+  };
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::newton_bilateral(const unsigned int       k,
+                                       const std::vector<bool> &broken) const
+  {
+    // A joint with strength is closed until it breaks (the outer loop of
+    // semismooth_newton() breaks it): its force may be tensile.
+    return !broken[k] && contact_pairs[k].joint.has_strength();
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::newton_pair_residual(const unsigned int k,
+                                           NewtonSystem      &system) const
+  {
+    const auto           &pair = contact_pairs[k];
+    const unsigned int    r0   = k * dim;
+    const Vector<double> &u = system.u, &d = system.d;
+    Vector<double>       &F = system.residual;
+    for (unsigned int e = 0; e < dim; ++e)
+      if (held[k][e])
+        {
+          F(r0 + e) = u(r0 + e);
+          system.add_unit(r0 + e, r0 + e, 1.);
+        }
+    const double gap = pair.initial_gap + d(r0);
+    if (pair.tied)
+      {
+        for (unsigned int e = 0; e < dim; ++e)
+          if (!held[k][e])
+            {
+              F(r0 + e) =
+                (e == 0 ? gap : d(r0 + e) - committed_displacement[k][e]);
+              system.add_displacement(r0 + e, r0 + e, 1.);
+            }
+        return;
+      }
+
+    // Normal: closed (g = 0) or open (r_N = 0); xi the augmented normal
+    // force that sets the friction disc's radius.
+    const bool bilateral  = newton_bilateral(k, system.broken);
+    double     xi         = 0.;
+    bool       xi_has_gap = false;
+    if (!held[k][0])
+      {
+        const double w = u(r0) - gap;
+        if (bilateral || w > 0.)
+          {
+            F(r0) = gap;
+            system.add_displacement(r0, r0, 1.);
+            xi         = bilateral ? u(r0) : w;
+            xi_has_gap = !bilateral;
+          }
+        else
+          {
+            F(r0) = u(r0);
+            system.add_unit(r0, r0, 1.);
+          }
+      }
+    newton_tangential_residual(k, xi, xi_has_gap, system);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::newton_tangential_residual(const unsigned int k,
+                                                 const double       xi,
+                                                 const bool         xi_has_gap,
+                                                 NewtonSystem &system) const
+  {
+    const auto        &pair  = contact_pairs[k];
+    const unsigned int r0    = k * dim;
+    const double       scale = flexibility_scale;
+    const double       mu    = pair.joint.friction_coefficient;
+    const double       R =
+      scale * pair.joint.shear_strength(0., pair.area, system.broken[k]) +
+      mu * std::max(xi, 0.);
+    const Vector<double> &u = system.u, &d = system.d;
+    Vector<double>       &F = system.residual;
+
+    // z = r_T - eps v over the tangential directions not held.
+    Tensor<1, dim> z, v;
+    for (unsigned int e = 1; e < dim; ++e)
+      if (!held[k][e])
+        {
+          v[e] = d(r0 + e) - committed_displacement[k][e];
+          z[e] = u(r0 + e) - v[e];
+        }
+    const double z_norm = z.norm();
+    for (unsigned int e = 1; e < dim; ++e)
+      {
+        if (held[k][e])
+          continue;
+        const unsigned int row = r0 + e;
+        if (R > 0. && z_norm <= R)
+          {
+            // Stuck: no slip increment.
+            F(row) = v[e];
+            system.add_displacement(row, row, 1.);
+          }
+        else if (z_norm > 0.)
+          {
+            // Slipping: r_T = R z / |z|.
+            const Tensor<1, dim> n = z / z_norm;
+            F(row)                 = u(row) - R * n[e];
+            system.add_unit(row, row, 1.);
+            for (unsigned int l = 1; l < dim; ++l)
+              if (!held[k][l])
+                {
+                  const double m =
+                    ((e == l ? 1. : 0.) - n[e] * n[l]) * R / z_norm;
+                  system.add_unit(row, r0 + l, -m);
+                  system.add_displacement(row, r0 + l, m);
+                }
+            if (xi > 0.)
+              {
+                system.add_unit(row, r0, -n[e] * mu);
+                if (xi_has_gap)
+                  system.add_displacement(row, r0, n[e] * mu);
+              }
+          }
+        else
+          {
+            F(row) = u(row); // no strength and no motion: no force
+            system.add_unit(row, row, 1.);
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  ContactSolver<dim>::newton_residual(NewtonSystem &system) const
+  {
+    const unsigned int n_r = n_pairs * dim;
+    system.d               = external_displacement;
+    for (unsigned int i = 0; i < n_r; ++i)
+      for (unsigned int j = 0; j < system.A.n(); ++j)
+        system.d(i) += system.A(i, j) * system.u(j);
+    system.residual.reinit(n_r + n_alpha_total);
+    if (system.jacobian != nullptr)
+      system.jacobian->reinit(n_r + n_alpha_total, n_r + n_alpha_total);
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      newton_pair_residual(k, system);
+    // The floating blocks' equilibrium, P^T r + F_e = 0, times scale.
+    for (unsigned int a = 0; a < n_alpha_total; ++a)
+      {
+        double value = flexibility_scale * external_resultant[a];
+        for (unsigned int j = 0; j < n_r; ++j)
+          {
+            value += coupling(j, a) * system.u(j);
+            system.add_unit(n_r + a, j, coupling(j, a));
+          }
+        system.residual(n_r + a) = value;
+      }
+    return 0.5 * (system.residual * system.residual);
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::newton_solve(NewtonSystem &system,
+                                   unsigned int &iterations) const
+  {
+    const unsigned int n_r = n_pairs * dim;
+    // The scale of the residual and of a step: the increment's data, not
+    // the iterate (a near-singular step can make the iterate huge).
+    double reference = 1e-300;
+    for (unsigned int i = 0; i < n_r; ++i)
+      reference = std::max(reference, std::abs(external_displacement(i)));
+    for (const double f : external_resultant)
+      reference = std::max(reference, flexibility_scale * std::abs(f));
+    for (const auto &pair : contact_pairs)
+      reference = std::max(reference, pair.initial_gap);
+
+    LAPACKFullMatrix<double> jacobian;
+    double                   damping = internal::initial_damping;
+    for (unsigned int it = 0; it < internal::newton_max_iterations; ++it)
+      {
+        system.jacobian    = &jacobian;
+        const double merit = newton_residual(system);
+        system.jacobian    = nullptr;
+        if (system.residual.linfty_norm() <=
+            internal::newton_tolerance * reference)
+          return true;
+        ++iterations;
+        // Newton's step where it decreases 1/2 |F|^2 (with backtracking,
+        // and no longer than the trust length), else Levenberg and
+        // Marquardt's, which always can.
+        const LAPACKFullMatrix<double> copy = jacobian;
+        const double                   trust =
+          internal::trust_factor * std::max(reference, system.u.linfty_norm());
+        if (!newton_line_search(system, jacobian, merit, trust) &&
+            !levenberg_marquardt_step(system, copy, merit, damping))
+          return false;
+      }
+    return false;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::newton_line_search(NewtonSystem             &system,
+                                         LAPACKFullMatrix<double> &jacobian,
+                                         const double              merit,
+                                         const double              trust) const
+  {
+    Vector<double> step(system.residual);
+    step *= -1.;
+    try
+      {
+        jacobian.compute_lu_factorization();
+      }
+    catch (const LACExceptions::ExcSingular &)
+      {
+        return false;
+      }
+    jacobian.solve(step);
+    if (!std::isfinite(step.l2_norm()))
+      return false;
+    if (step.linfty_norm() > trust)
+      step *= trust / step.linfty_norm();
+
+    const Vector<double> start = system.u;
+    double               t     = 1.;
+    for (unsigned int h = 0; h <= internal::max_halvings; ++h, t *= 0.5)
+      {
+        system.u = start;
+        system.u.add(t, step);
+        if (newton_residual(system) <= (1. - 2. * internal::armijo * t) * merit)
+          return true;
+      }
+    system.u = start;
+    return false;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::levenberg_marquardt_step(
+    NewtonSystem                   &system,
+    const LAPACKFullMatrix<double> &jacobian,
+    const double                    merit,
+    double                         &damping) const
+  {
+    // (J^T J + lambda diag(J^T J)) step = -J^T F, lambda raised tenfold
+    // until the merit decreases and lowered after a success.
+    const unsigned int       n = system.u.size();
+    LAPACKFullMatrix<double> normal(n, n);
+    jacobian.Tmmult(normal, jacobian);
+    Vector<double> gradient(n);
+    jacobian.Tvmult(gradient, system.residual);
+    const Vector<double> start = system.u;
+    for (unsigned int attempt = 0; attempt < internal::max_halvings; ++attempt)
+      {
+        LAPACKFullMatrix<double> matrix = normal;
+        for (unsigned int i = 0; i < n; ++i)
+          matrix(i, i) += damping * std::max(normal(i, i), 1e-300);
+        Vector<double> step(gradient);
+        step *= -1.;
+        bool solved = true;
+        try
+          {
+            matrix.compute_lu_factorization();
+            matrix.solve(step);
+          }
+        catch (const LACExceptions::ExcSingular &)
+          {
+            solved = false;
+          }
+        if (solved && std::isfinite(step.l2_norm()))
+          {
+            system.u = start;
+            system.u += step;
+            if (newton_residual(system) < merit)
+              {
+                damping = std::max(damping / 10., internal::initial_damping);
+                return true;
+              }
+          }
+        damping *= 10.;
+      }
+    system.u = start;
+    return false;
+  }
+
+
+
+  template <int dim>
+  typename ContactSolver<dim>::Trial
+  ContactSolver<dim>::newton_states(const NewtonSystem &system) const
+  {
+    const double scale = flexibility_scale;
+    Trial        trial = committed;
+    trial.broken       = system.broken;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        const auto        &pair = contact_pairs[k];
+        const unsigned int r0   = k * dim;
+        if (pair.tied || std::all_of(held[k].begin(),
+                                     held[k].end(),
+                                     [](bool h) { return h; }))
+          continue;
+        const double gap             = pair.initial_gap + system.d(r0);
+        const double w               = held[k][0] ? 0. : system.u(r0) - gap;
+        const bool   bilateral       = newton_bilateral(k, system.broken);
+        trial.tensile_slip[k]        = false;
+        trial.direction_stiffness[k] = 0.;
+        if (!bilateral && w <= 0.)
+          {
+            trial.state[k] = ContactState::open;
+            continue;
+          }
+        const double xi = bilateral ? system.u(r0) : w;
+        const double R =
+          scale * pair.joint.shear_strength(0., pair.area, system.broken[k]) +
+          pair.joint.friction_coefficient * std::max(xi, 0.);
+        Tensor<1, dim> z, v, r_t;
+        for (unsigned int e = 1; e < dim; ++e)
+          if (!held[k][e])
+            {
+              v[e]   = system.d(r0 + e) - committed_displacement[k][e];
+              r_t[e] = system.u(r0 + e);
+              z[e]   = r_t[e] - v[e];
+            }
+        if (R > 0. && z.norm() <= R)
+          {
+            trial.state[k] = ContactState::stick;
+            continue;
+          }
+        trial.state[k] = ContactState::slip;
+        const Tensor<1, dim> direction =
+          v.norm() > 0.   ? Tensor<1, dim>(v / v.norm()) :
+          r_t.norm() > 0. ? Tensor<1, dim>(-r_t / r_t.norm()) :
+                            trial.slip_direction[k];
+        trial.slip_direction[k] = direction;
+        trial.tensile_slip[k]   = system.u(r0) < 0.;
+        if (dim == 3 && v.norm() > 0.)
+          trial.direction_stiffness[k] = (R / scale) / v.norm();
+      }
+    return trial;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactSolver<dim>::newton_worst_tension(const NewtonSystem &system) const
+  {
+    // The joint in tension beyond its limit by the most (relative to the
+    // largest force): it breaks first, as on a path it would.
+    unsigned int worst  = numbers::invalid_unsigned_int;
+    double       excess = 0.;
+    double       force  = 1e-300;
+    for (unsigned int i = 0; i < n_pairs * dim; ++i)
+      force = std::max(force, std::abs(system.u(i)));
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        const auto &pair = contact_pairs[k];
+        if (pair.tied || held[k][0] || !newton_bilateral(k, system.broken))
+          continue;
+        const double limit =
+          flexibility_scale * pair.joint.tensile_limit(pair.area, false);
+        const double over = (-limit - system.u(k * dim)) / force;
+        if (over > 1e-9 && over > excess)
+          {
+            excess = over;
+            worst  = k;
+          }
+      }
+    return worst;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::semismooth_newton(const unsigned int increment,
+                                        unsigned int      &iterations)
+  {
+    const unsigned int n_r = n_pairs * dim;
+    const unsigned int n   = n_r + n_alpha_total;
+    NewtonSystem       system;
+    system.broken = committed.broken;
+    system.A.reinit(n_r, n);
+    for (unsigned int i = 0; i < n_r; ++i)
+      {
+        for (unsigned int j = 0; j < n_r; ++j)
+          system.A(i, j) = flexibility_entry(i, j) / flexibility_scale;
+        for (unsigned int a = 0; a < n_alpha_total; ++a)
+          system.A(i, n_r + a) = coupling(i, a);
+      }
+    // From the increment's bonded answer (every pair stuck), where it
+    // exists: Newton is local, and from the unloaded state it can end at
+    // an indeterminate answer, every pair slipping around a spinning
+    // block, which exists below the limit but is not what the load drives.
+    system.u.reinit(n);
+    Trial          bonded = committed;
+    Vector<double> solution, displacement;
+    std::fill(bonded.state.begin(), bonded.state.end(), ContactState::stick);
+    if (solve_trial(bonded, solution, displacement))
+      for (unsigned int i = 0; i < n; ++i)
+        system.u(i) = solution(i) * (i < n_r ? flexibility_scale : 1.);
+    else if (committed_solution.size() == n)
+      for (unsigned int i = 0; i < n; ++i)
+        system.u(i) =
+          committed_solution(i) * (i < n_r ? flexibility_scale : 1.);
+
+    // Joints break one at a time, the one furthest beyond its tensile
+    // limit first, and the system is solved again from where it was.
+    for (unsigned int breaks = 0; breaks <= n_pairs; ++breaks)
+      {
+        if (!newton_solve(system, iterations))
+          return false;
+        const unsigned int worst = newton_worst_tension(system);
+        if (worst == numbers::invalid_unsigned_int)
+          break;
+        system.broken[worst] = true;
+      }
+
+    const FastOutcome polish = fast_iteration(newton_states(system), increment);
+    iterations += polish.iterations;
+    if (!polish.converged)
+      return false;
+    // In 3D a block can be in equilibrium with every pair slipping below
+    // its limit: the slip directions, spread by the block's elastic
+    // deformation, hold it, and the states leave no linear mechanism free.
+    // Such an answer stands where its forces are verified within every
+    // pair's strength (they balance the loads by construction); beyond a
+    // limit none are.
+    return mechanism(current).empty() ||
+           (dim == 3 && forces_within_strength(current, current_solution));
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::forces_within_strength(
+    const Trial          &trial,
+    const Vector<double> &solution) const
+  {
+    double force_scale = 1e-300;
+    for (unsigned int i = 0; i < n_pairs * dim; ++i)
+      force_scale = std::max(force_scale, std::abs(solution(i)));
+    const double tolerance = internal::strength_tolerance * force_scale;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        const auto &pair = contact_pairs[k];
+        if (trial.state[k] == ContactState::open || pair.tied)
+          continue;
+        const double   r_n = solution(k * dim);
+        Tensor<1, dim> r_t;
+        for (unsigned int d = 1; d < dim; ++d)
+          r_t[d] = solution(k * dim + d);
+        if (r_n < -pair.joint.tensile_limit(pair.area, trial.broken[k]) -
+                    tolerance ||
+            r_t.norm() >
+              pair.joint.shear_strength(r_n, pair.area, trial.broken[k]) +
+                tolerance)
+          return false;
+      }
+    return true;
+  }
+
+
+
+  // The members defined in this file (the class itself is instantiated in
+  // contact_solver.cc).
+#define MBFEM_INSTANTIATE(dim)                                         \
+  template bool ContactSolver<dim>::semismooth_newton(unsigned int,    \
+                                                      unsigned int &); \
+  template bool ContactSolver<dim>::forces_within_strength(            \
+    const Trial &, const Vector<double> &) const;
+  MBFEM_INSTANTIATE(2)
+  MBFEM_INSTANTIATE(3)
+#undef MBFEM_INSTANTIATE
+} // namespace mbfem
