@@ -38,6 +38,12 @@ The matrices of issue 20 (--matrix, default all):
 
   python3 scripts/limit_cases.py [--mbfem build/mbfem] [--matrix dam]
                                  [--only 'p=1'] [--quick] [--markdown]
+  python3 scripts/limit_cases.py --matrix wedge --bisect 0.005
+
+With --bisect W, instead of the table: for each case, bisection on lambda
+from [0.9, 1.1] (converged at 0.9, not at 1.1) to a bracket of width W,
+printing the limit mbfem finds (the bracket, times the closed form) and
+the larger distance of its ends from the closed form, in per cent.
 
 The dam meshes with 0.5 and 0.25 m joint elements are generated with
 gmsh from meshes/gravity_dam.geo (-setnumber h) into the work folder
@@ -261,6 +267,53 @@ def verdict(case, lam, code, stderr):
     return ""
 
 
+def bisect(mbfem, work, case, width):
+    """The bracket [lo, hi] of lambda (x the closed-form limit) between the
+    last multiple that converged and the first that did not, narrowed by
+    bisection from [0.9, 1.1] to width; the runs it took."""
+    lo, hi, runs = 0.9, 1.1, []
+    for lam in (lo, hi):
+        runs.append((lam, run(mbfem, work, case, lam)[0]))
+    if runs[0][1] != 0 or runs[1][1] == 0:
+        return None, None, runs
+    while hi - lo > width:
+        mid = 0.5 * (lo + hi)
+        code = run(mbfem, work, case, mid)[0]
+        runs.append((mid, code))
+        if code == 0:
+            lo = mid
+        else:
+            hi = mid
+    return lo, hi, runs
+
+
+def bisect_all(args, work, matrices):
+    """Prints, per case, the limit mbfem finds against the closed form."""
+    print("%-24s %9s %9s %9s %8s %5s  %s" % (
+        "case", "closed", "mbfem lo", "mbfem hi", "error %", "runs",
+        "exit codes above"))
+    wrong = 0
+    start = time.time()
+    for case in cases(work, False, matrices):
+        if args.only not in case.name:
+            continue
+        lo, hi, runs = bisect(args.mbfem, work, case, args.bisect)
+        if lo is None:
+            wrong += 1
+            print("%-24s %9.5f  no bracket in [0.9, 1.1]: %s" % (
+                case.name, case.f_limit, runs), flush=True)
+            continue
+        # The error bound: the farther end of the bracket from 1.
+        error = 100. * max(abs(lo - 1.), abs(hi - 1.))
+        above = sorted({c for lam, c in runs if c != 0})
+        print("%-24s %9.5f %9.5f %9.5f %8.3f %5d  %s" % (
+            case.name, case.f_limit, lo * case.f_limit, hi * case.f_limit,
+            error, len(runs), above), flush=True)
+    print("%d case(s) without a bracket; %.0f s in all; work folder %s" % (
+        wrong, time.time() - start, work))
+    return 1 if wrong else 0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--mbfem", default=os.path.join(SOURCE, "build",
@@ -274,6 +327,10 @@ def main():
     parser.add_argument("--markdown", action="store_true",
                         help="print the table as Markdown")
     parser.add_argument("--work", default="")
+    parser.add_argument("--bisect", type=float, default=0.,
+                        help="instead of the table: bisect on lambda in "
+                        "[0.9, 1.1] to this width, converged below, not "
+                        "above (issue 13's limits within 1 %%)")
     args = parser.parse_args()
     matrices = MATRICES if args.matrix == "all" else [args.matrix]
     if any(m not in MATRICES for m in matrices):
@@ -281,6 +338,8 @@ def main():
                                                         ", ".join(MATRICES)))
     work = args.work or tempfile.mkdtemp(prefix="mbfem-limits-")
     os.makedirs(work, exist_ok=True)
+    if args.bisect > 0.:
+        return bisect_all(args, work, matrices)
     if args.markdown:
         print("| case | lambda | F | exit | result | iterations | "
               "increments by load path/Newton | halvings | LP limit | s | message |")

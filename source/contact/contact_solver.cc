@@ -1004,11 +1004,18 @@ namespace mbfem
   ContactSolver<dim>::rescued_by_newton(const unsigned int increment)
   {
     // The path may have stopped part way: back to the increment's load.
+    // A failed attempt leaves the current states (and broken joints) as
+    // the load path left them, which the certificate then reads.
     set_load_fraction(1.);
-    unsigned int iterations = 0;
+    const Trial                       trial        = current;
+    const Vector<double>              solution     = current_solution;
+    const std::vector<Tensor<1, dim>> displacement = current_displacement;
+    unsigned int                      iterations   = 0;
     if (!semismooth_newton(increment, iterations))
       {
-        set_load_fraction(1.);
+        current              = trial;
+        current_solution     = solution;
+        current_displacement = displacement;
         return false;
       }
     method        = StateMethod::semismooth_newton;

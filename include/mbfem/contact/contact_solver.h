@@ -497,13 +497,23 @@ namespace mbfem
     newton_states(const NewtonSystem &system) const;
 
     /**
-     * Whether the forces of @p solution are within every closed pair's
-     * strength of @p trial (tension limit and friction disc), to a
-     * relative 1e-8: with equilibrium, static admissibility.
+     * Whether the current answer's largest slip increment is of the order
+     * of the blocks' deformation (Delta_F + C_hat rho), not an unbounded
+     * rigid slide: semismooth_newton()'s test for a 3D answer whose states
+     * name a mechanism.
      */
     bool
-    forces_within_strength(const Trial          &trial,
-                           const Vector<double> &solution) const;
+    slip_is_elastic() const;
+
+    /** The largest force and displacement of @p system, in u's units. */
+    std::pair<double, double>
+    newton_scales(const NewtonSystem &system) const;
+
+    /** The friction disc's radius (times scale) of pair @p k at @p xi. */
+    double
+    newton_radius(const unsigned int  k,
+                  const double        xi,
+                  const NewtonSystem &system) const;
 
     /** The unbroken pair furthest beyond its tensile limit, if any. */
     unsigned int
