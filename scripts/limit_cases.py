@@ -15,9 +15,9 @@ run: the exit code and what it means,
   error            exit 1: anything else (also an undecided certificate)
 
 the state iterations summed over the increments, how many increments the
-load path and the semismooth Newton method concluded (P/N; the fast
-iteration alone did not), how many step halvings were tried, the wall time
-and the first line of the message.
+load path, the semismooth Newton method and the load continuation
+concluded (P/N/C; the fast iteration alone did not), how many step
+halvings were tried, the wall time and the first line of the message.
 Below the limit (lambda < 1) 'converged' is expected; above it
 'certified-none', except where a model's statics (LP) limit lies above its
 closed form (the 3D wedge: 1.3737 against Hoek and Bray's 1.3249), where
@@ -217,14 +217,17 @@ def write_case(work, case, lam):
 
 
 def summarise(stdout, stderr):
-    """(iterations summed, increments concluded by the load path and by
-    the semismooth Newton method as 'P/N', halvings, the certificate's
-    strength factor or None, first message line, every message line)."""
+    """(iterations summed, increments concluded by the load path, the
+    semismooth Newton method and the load continuation as 'P/N/C',
+    halvings, the certificate's strength factor or None, first message
+    line, every message line)."""
     iterations = halvings = 0
-    concluded = {"load path": 0, "semismooth Newton": 0}
+    concluded = {"load path": 0, "semismooth Newton": 0,
+                 "load continuation": 0}
     for line in stdout.splitlines():
         m = re.match(r"\s*increment \d+/\d+, t = [^:]*: (\d+) iteration"
-                     r"\(s\)( \(fast \d+, (load path|semismooth Newton) "
+                     r"\(s\)( \(fast \d+, (load path|semismooth Newton|"
+                     r"load continuation) "
                      r"\d+\))?", line)
         if m:
             iterations += int(m.group(1))
@@ -239,7 +242,9 @@ def summarise(stdout, stderr):
         if "Load increment" in line or "Statics certificate" in line:
             message = line.strip()
             break
-    path = "%d/%d" % (concluded["load path"], concluded["semismooth Newton"])
+    path = "%d/%d/%d" % (concluded["load path"],
+                         concluded["semismooth Newton"],
+                         concluded["load continuation"])
     return iterations, path, halvings, strength, message, stderr
 
 
@@ -342,11 +347,11 @@ def main():
         return bisect_all(args, work, matrices)
     if args.markdown:
         print("| case | lambda | F | exit | result | iterations | "
-              "increments by load path/Newton | halvings | LP limit | s | message |")
+              "increments by load path/Newton/continuation | halvings | LP limit | s | message |")
         print("|---|---|---|---|---|---|---|---|---|---|---|")
     else:
         print("%-24s %7s %8s %4s %-14s %5s %4s %4s %8s %7s  %s" % (
-            "case", "lambda", "F", "exit", "result", "iter", "P/N", "halv",
+            "case", "lambda", "F", "exit", "result", "iter", "P/N/C", "halv",
             "LP", "seconds", "first message"))
     wrong = 0
     start = time.time()
@@ -369,7 +374,7 @@ def main():
                 print("| %s | %.4f | %.5f | %d | %s | %d | %s | %d | %s | "
                       "%.1f | %s |" % row, flush=True)
             else:
-                print("%-24s %7.4f %8.5f %4d %-14s %5d %4s %4d %8s %7.1f  %s"
+                print("%-24s %7.4f %8.5f %4d %-14s %5d %5s %4d %8s %7.1f  %s"
                       % row, flush=True)
     print("%d run(s) differ from the limit's verdict; %.0f s in all; work "
           "folder %s" % (wrong, time.time() - start, work))

@@ -46,8 +46,10 @@ namespace mbfem
           return "fast";
         case StateMethod::load_path:
           return "load path";
-        default:
+        case StateMethod::semismooth_newton:
           return "semismooth Newton";
+        default:
+          return "load continuation";
       }
   }
 
@@ -978,7 +980,7 @@ namespace mbfem
         // Newton method next; if it fails too, where the fast iteration had
         // met a singular trial, its verdict stands, as before the path
         // existed.
-        if (rescued_by_newton(increment))
+        if (rescued(increment))
           return fast_iterations + path_switches;
         AssertThrow(!fast.no_equilibrium,
                     Exceptions::ExcNoEquilibrium(fast.failure));
@@ -990,7 +992,7 @@ namespace mbfem
         // branch that ends there (doc/state_iteration.md); the Newton
         // method looks for the solution, and the verdict stands if it
         // finds none.
-        if (rescued_by_newton(increment))
+        if (rescued(increment))
           return fast_iterations + path_switches;
         throw;
       }
@@ -1001,7 +1003,7 @@ namespace mbfem
 
   template <int dim>
   bool
-  ContactSolver<dim>::rescued_by_newton(const unsigned int increment)
+  ContactSolver<dim>::rescued(const unsigned int increment)
   {
     // The path may have stopped part way: back to the increment's load.
     // A failed attempt leaves the current states (and broken joints) as
@@ -1010,17 +1012,23 @@ namespace mbfem
     const Trial                       trial        = current;
     const Vector<double>              solution     = current_solution;
     const std::vector<Tensor<1, dim>> displacement = current_displacement;
-    unsigned int                      iterations   = 0;
-    if (!semismooth_newton(increment, iterations))
+    unsigned int newton_iterations = 0, continuation_iterations = 0;
+    if (semismooth_newton(increment, newton_iterations))
       {
-        current              = trial;
-        current_solution     = solution;
-        current_displacement = displacement;
-        return false;
+        method        = StateMethod::semismooth_newton;
+        path_switches = newton_iterations;
+        return true;
       }
-    method        = StateMethod::semismooth_newton;
-    path_switches = iterations;
-    return true;
+    if (load_continuation(increment, continuation_iterations))
+      {
+        method        = StateMethod::load_continuation;
+        path_switches = continuation_iterations;
+        return true;
+      }
+    current              = trial;
+    current_solution     = solution;
+    current_displacement = displacement;
+    return false;
   }
 
 

@@ -4,6 +4,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 // The semismooth Newton method of the contact state iteration
@@ -54,6 +55,12 @@ namespace mbfem
      * wedge).
      */
     constexpr double elastic_slip_factor = 1e3;
+    /**
+     * load_continuation()'s load fractions (of the increment, from the
+     * last converged state): from ten times the load back to it.
+     */
+    constexpr std::array<double, 4> continuation_fractions = {
+      {10., 5., 2., 1.}};
     /** check()'s relative tolerance (contact_solver.cc, check_scales()). */
     constexpr double check_tolerance = 1e-9;
   } // namespace internal
@@ -564,8 +571,15 @@ namespace mbfem
 
     const FastOutcome polish = fast_iteration(newton_states(system), increment);
     iterations += polish.iterations;
-    if (!polish.converged)
-      return false;
+    return polish.converged && acceptable_answer();
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::acceptable_answer() const
+  {
     // In 3D a block can be in equilibrium with every pair slipping below
     // its limit: the slip directions, spread by the block's elastic
     // deformation, hold it. mechanism() ignores that (it counts a slipping
@@ -605,12 +619,44 @@ namespace mbfem
 
 
 
+  template <int dim>
+  bool
+  ContactSolver<dim>::load_continuation(const unsigned int increment,
+                                        unsigned int      &iterations)
+  {
+    // The increment's load scaled up (its data extrapolated past s = 1),
+    // where a gap that a block must close by a rigid motion weighs less
+    // against the deformation, then brought back to s = 1 in steps, the
+    // fast iteration at each from the states of the last. Issue 20's
+    // toppling pair with a tenth of its weight in increment 1: the fast
+    // iteration concludes at ten times that load, and each step back in
+    // one iteration.
+    Trial trial  = committed;
+    bool  solved = true;
+    for (const double s : internal::continuation_fractions)
+      {
+        set_load_fraction(s);
+        const FastOutcome outcome = fast_iteration(trial, increment);
+        iterations += outcome.iterations;
+        solved = outcome.converged;
+        if (!solved)
+          break;
+        trial = current;
+      }
+    set_load_fraction(1.);
+    return solved && acceptable_answer();
+  }
+
+
+
   // The members defined in this file (the class itself is instantiated in
   // contact_solver.cc).
 #define MBFEM_INSTANTIATE(dim)                                         \
   template bool ContactSolver<dim>::semismooth_newton(unsigned int,    \
                                                       unsigned int &); \
-  template bool ContactSolver<dim>::slip_is_elastic() const;
+  template bool ContactSolver<dim>::slip_is_elastic() const;           \
+  template bool ContactSolver<dim>::load_continuation(unsigned int,    \
+                                                      unsigned int &);
   MBFEM_INSTANTIATE(2)
   MBFEM_INSTANTIATE(3)
 #undef MBFEM_INSTANTIATE

@@ -57,13 +57,16 @@ namespace mbfem
    * reached. Where both fail, the semismooth Newton method: the increment
    * as one nonsmooth system (Alart and Curnier's projections for the joint
    * law), whose answer gives the states that the fast iteration then
-   * solves and checks.
+   * solves and checks. Where that fails too, the load continuation: the
+   * fast iteration at ten times the increment's load, then back to it in
+   * steps, each from the states of the last.
    */
   enum class StateMethod : unsigned char
   {
     fast,
     load_path,
-    semismooth_newton
+    semismooth_newton,
+    load_continuation
   };
 
   std::string
@@ -433,10 +436,11 @@ namespace mbfem
 
     /**
      * solve_increment() where the load path failed: the semismooth Newton
-     * method at the increment's full load; true if it concluded.
+     * method at the increment's full load, then the load continuation;
+     * true if one concluded (method says which).
      */
     bool
-    rescued_by_newton(const unsigned int increment);
+    rescued(const unsigned int increment);
 
     /**
      * The semismooth Newton method (source/contact/semismooth_newton.cc),
@@ -446,6 +450,22 @@ namespace mbfem
      */
     bool
     semismooth_newton(const unsigned int increment, unsigned int &iterations);
+
+    /**
+     * The load continuation (source/contact/semismooth_newton.cc): the
+     * fast iteration at 10, 5, 2 and 1 times the increment's load, each
+     * from the states of the last; true if it concluded at 1 with an
+     * acceptable answer, which is then current.
+     */
+    bool
+    load_continuation(const unsigned int increment, unsigned int &iterations);
+
+    /**
+     * Whether the current answer of the Newton method or the continuation
+     * stands: its states leave no mechanism, or (3D) its slip is elastic.
+     */
+    bool
+    acceptable_answer() const;
 
     /** The unknowns, residual and Jacobian of semismooth_newton(). */
     struct NewtonSystem;
