@@ -423,8 +423,18 @@ namespace mbfem
       text << message << "    Statics certificate at t = " << time << ": "
            << result.description << "\n";
       using Verdict = typename StaticAdmissibility<dim>::Verdict;
+      // The verdict first: whatever way the state iteration ended (a cycle,
+      // a singular state), the certificate is what proves it.
       if (result.verdict == Verdict::none)
-        throw Exceptions::ExcNoEquilibrium(text.str());
+        {
+          std::ostringstream verdict;
+          verdict << "No equilibrium at t = " << time
+                  << ": no contact forces within the joints' strength "
+                     "balance the floating blocks' loads (the statics "
+                     "certificate below).\n    "
+                  << text.str();
+          throw Exceptions::ExcNoEquilibrium(verdict.str());
+        }
       if (result.verdict == Verdict::admissible)
         throw Exceptions::ExcNotConvergedButAdmissible(
           text.str() +
