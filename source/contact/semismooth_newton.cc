@@ -67,6 +67,24 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /**
+     * Whether every entry of @p v is finite: a nearly singular Jacobian can
+     * give a step of NaNs (checked entry by entry, as deal.II's norms
+     * assert finiteness in Debug).
+     */
+    bool
+    all_finite(const Vector<double> &v)
+    {
+      return std::all_of(v.begin(), v.end(), [](const double x) {
+        return std::isfinite(x);
+      });
+    }
+  } // namespace
+
+
+
   template <int dim>
   struct ContactSolver<dim>::NewtonSystem
   {
@@ -344,7 +362,7 @@ namespace mbfem
         return false;
       }
     jacobian.solve(step);
-    if (!std::isfinite(step.l2_norm()))
+    if (!all_finite(step))
       return false;
     // Armijo's test for the step taken, t times the (cut) Newton step:
     // the decrease predicted by the linearisation is 2 t cut merit.
@@ -402,7 +420,7 @@ namespace mbfem
           {
             solved = false;
           }
-        if (solved && std::isfinite(step.l2_norm()))
+        if (solved && all_finite(step))
           {
             system.u = start;
             system.u += step;
