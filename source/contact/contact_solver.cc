@@ -619,14 +619,13 @@ namespace mbfem
   ContactSolver<dim>::break_open(const unsigned int k,
                                  const Trial       &trial,
                                  const double       r_n,
+                                 const double       tension_limit,
                                  const CheckScales &scales,
                                  Trial             &next,
                                  double            &violation) const
   {
-    const auto  &pair = contact_pairs[k];
-    const double tension_limit =
-      pair.joint.tensile_limit(pair.area, trial.broken[k]);
-    next.state[k] = ContactState::open;
+    const auto &pair = contact_pairs[k];
+    next.state[k]    = ContactState::open;
     if (!trial.broken[k] && pair.joint.has_strength())
       next.broken[k] = true;
     next.tensile_slip[k] = false;
@@ -654,7 +653,7 @@ namespace mbfem
     const double limit =
       pair.joint.shear_strength(r_n, pair.area, trial.broken[k]);
     if (r_n < -tension_limit - scales.force_tolerance)
-      break_open(k, trial, r_n, scales, next, violation);
+      break_open(k, trial, r_n, tension_limit, scales, next, violation);
     else if (r_t.norm() > limit + scales.force_tolerance)
       {
         next.state[k]               = ContactState::slip;
@@ -695,7 +694,7 @@ namespace mbfem
       along < -scales.displacement_tolerance ||
       (dim == 3 && increment_t.norm() < scales.displacement_tolerance);
     if (r_n < -tension_limit - scales.force_tolerance)
-      break_open(k, trial, r_n, scales, next, violation);
+      break_open(k, trial, r_n, tension_limit, scales, next, violation);
     else if (sticks)
       {
         next.state[k] = ContactState::stick;
@@ -1289,15 +1288,24 @@ namespace mbfem
       for (unsigned int k = 0; k < n_pairs; ++k)
         if (current.state[k] == ContactState::slip)
           {
-            Tensor<1, dim> v =
-              current_displacement[k] - committed_displacement[k];
-            v[0] = 0.;
+            const Tensor<1, dim> v = slip_increment(k);
             if (v.norm() > 0.)
               current.slip_direction[k] = v / v.norm();
           }
     committed              = current;
     committed_displacement = current_displacement;
     committed_solution     = current_solution;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactSolver<dim>::slip_increment(const unsigned int k) const
+  {
+    Tensor<1, dim> v = current_displacement[k] - committed_displacement[k];
+    v[0]             = 0.;
+    return v;
   }
 
 
@@ -1310,9 +1318,7 @@ namespace mbfem
     for (unsigned int k = 0; k < n_pairs; ++k)
       if (current.state[k] == ContactState::slip)
         {
-          Tensor<1, dim> v =
-            current_displacement[k] - committed_displacement[k];
-          v[0] = 0.;
+          const Tensor<1, dim> v = slip_increment(k);
           if (v.norm() == 0.)
             continue;
           const double cosine =

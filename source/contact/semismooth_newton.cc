@@ -626,12 +626,7 @@ namespace mbfem
     double       slip    = 0.;
     for (unsigned int k = 0; k < n_pairs; ++k)
       if (current.state[k] == ContactState::slip)
-        {
-          Tensor<1, dim> v =
-            current_displacement[k] - committed_displacement[k];
-          v[0] = 0.;
-          slip = std::max(slip, v.norm());
-        }
+        slip = std::max(slip, slip_increment(k).norm());
     return slip <= internal::elastic_slip_factor * elastic;
   }
 

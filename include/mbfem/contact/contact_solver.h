@@ -318,6 +318,7 @@ namespace mbfem
     break_open(const unsigned int k,
                const Trial       &trial,
                const double       r_n,
+               const double       tension_limit,
                const CheckScales &scales,
                Trial             &next,
                double            &violation) const;
@@ -382,6 +383,13 @@ namespace mbfem
                    const unsigned int iteration,
                    const Trial       &trial,
                    const Trial       &next) const;
+
+    /**
+     * Pair @p k's tangential relative displacement in the increment just
+     * solved (current against committed), in its frame.
+     */
+    Tensor<1, dim>
+    slip_increment(const unsigned int k) const;
 
     /** Stores a consistent trial and its solution as current. */
     void
