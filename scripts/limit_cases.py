@@ -33,6 +33,10 @@ The matrices of issue 20 (--matrix, default all):
               1.05 x 2.4111, p = 1 and 2, 1 m, 5 increments
   toppling    the toppling pair, gravity ramped over 1, 2 and 10
               increments, at 0.99, 0.999, 1.001, 1.01 x 1.32377
+  column      Goodman and Bray's column of eight blocks on a stepped base
+              (issue 13), the weight in 1 increment (gravity/1) and
+              ramped over 5 (gravity/5), at 0.99 and 1.01 x 2.039446
+              (scripts/goodman_bray.py)
   wedge       the 3D wedge, p = 1 and 2, F = 0.3 ... 0.99 x 1.3249 (ten
               values) and 1.01, 1.03, 1.1, 1.5 x 1.3249
 
@@ -61,7 +65,7 @@ import time
 
 SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUTCOME = {0: "converged", 2: "certified-none", 3: "not-converged"}
-MATRICES = ["incline", "dam", "dam-c", "toppling", "wedge"]
+MATRICES = ["incline", "dam", "dam-c", "toppling", "column", "wedge"]
 
 
 class Case:
@@ -157,6 +161,19 @@ def toppling_cases(quick):
     return out
 
 
+def column_cases(quick):
+    """Goodman and Bray's column (parameters/toppling_column.prm): F =
+    1/tan(phi) at the limit from scripts/goodman_bray.py."""
+    out = []
+    for n in ([1, 5] if not quick else [1]):
+        extra = (section("Boundary conditions", Gravity_ramp_time=1)
+                 + section("Load history", Number_of_increments=n))
+        out.append(Case("column", "column gravity/%d" % n,
+                        "toppling_column.prm", 2.039446, 1.0, 0.,
+                        [0.99, 1.01], extra))
+    return out
+
+
 def wedge_cases(quick):
     t35 = math.tan(math.radians(35.))
     limit = 1.3249
@@ -185,6 +202,8 @@ def cases(work, quick, matrices):
         out += dam_cohesion_cases(work, quick)
     if "toppling" in matrices:
         out += toppling_cases(quick)
+    if "column" in matrices:
+        out += column_cases(quick)
     if "wedge" in matrices:
         out += wedge_cases(quick)
     return out
