@@ -49,6 +49,7 @@ read the same numbers.
 
   python3 scripts/goodman_bray.py              # the column: limit, table
   python3 scripts/goodman_bray.py --pair       # the two-block pair
+  python3 scripts/goodman_bray.py --tan-phi 0.5   # the table at mu = 0.5
   python3 scripts/goodman_bray.py --write-geo meshes/toppling_column.geo
 """
 
@@ -147,17 +148,26 @@ def limit_tan_phi(g):
     return 0.5 * (lo + hi)
 
 
-def report(g, name):
+def report(g, name, tan_phi=None):
+    """Prints the limit and the table of the blocks at the limit (or at
+    tan_phi if given)."""
     t = limit_tan_phi(g)
     print("%s: psi_p = %g deg, dx = %g m, %d blocks, unit weight %g N/m^3"
           % (name, g["psi_p"], g["dx"], len(blocks_of(g)),
              g["unit_weight"]))
     print("limit: tan(phi) = %.6f, phi = %.4f deg, F = 1/tan(phi) = %.6f"
           % (t, math.degrees(math.atan(t)), 1. / t))
+    if tan_phi is not None:
+        toe, rows = analyse(g, tan_phi)
+        print("at tan(phi) = %.6f (F = %.6f, %.4f of the limit's): force "
+              "needed at the toe P_0 = %.1f" % (tan_phi, 1. / tan_phi,
+                                                t / tan_phi, toe))
+    else:
+        rows = analyse(g, t)[1]
     print("%5s %6s %9s %6s %6s %10s %10s %10s %8s %10s %10s" % (
         "block", "y", "W", "M", "L", "P_n", "P_n-1,t", "P_n-1,s", "mode",
         "R", "S"))
-    for row in analyse(g, t)[1][::-1]:
+    for row in rows[::-1]:
         print("%5d %6.3f %9.1f %6.3f %6.3f %10.1f %10.1f %10.1f %8s "
               "%10.1f %10.1f" % row)
     return t
@@ -317,6 +327,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--pair", action="store_true",
                         help="the two-block pair of toppling_pair.prm")
+    parser.add_argument("--tan-phi", type=float, help="the table at this "
+                        "tan(phi) instead of at the limit")
     parser.add_argument("--write-geo", metavar="FILE",
                         help="write the column's gmsh .geo to FILE")
     args = parser.parse_args()
@@ -325,9 +337,11 @@ def main():
             f.write(geo(COLUMN, blocks_of(COLUMN)))
         return 0
     if args.pair:
-        report(PAIR, "toppling pair (parameters/toppling_pair.prm)")
+        report(PAIR, "toppling pair (parameters/toppling_pair.prm)",
+               args.tan_phi)
     else:
-        report(COLUMN, "toppling column (parameters/toppling_column.prm)")
+        report(COLUMN, "toppling column (parameters/toppling_column.prm)",
+               args.tan_phi)
     return 0
 
 
