@@ -50,6 +50,15 @@ read the same numbers.
   python3 scripts/goodman_bray.py              # the column: limit, table
   python3 scripts/goodman_bray.py --pair       # the two-block pair
   python3 scripts/goodman_bray.py --tan-phi 0.5   # the table at mu = 0.5
+  /usr/bin/python3 scripts/goodman_bray.py --rigid  # and the statics LPs
+
+--rigid also bisects on mu for the smallest friction at which the blocks,
+taken rigid, admit contact forces at all (a linear program for each mu:
+equilibrium of every block, Coulomb's cone at each contact point), once
+with the interblock forces allowed anywhere on the faces in contact (what
+mbfem's statics certificate does) and once only at the top of the
+shorter block (Goodman and Bray's point). The latter gives Goodman and
+Bray's limit, the former mbfem's certificate's.
   python3 scripts/goodman_bray.py --write-geo meshes/toppling_column.geo
 """
 
@@ -173,6 +182,68 @@ def report(g, name, tan_phi=None):
     return t
 
 
+def rigid_contacts(g, corners_only):
+    """The contact points of the rigid-block statics: both ends of each
+    tread, and of each face in contact either both ends (a force anywhere
+    on the face is a combination of forces at its ends) or only the top of
+    the shorter block (Goodman and Bray's point). Each entry: (block on
+    side a or None for the base, block on side b, point, normal on b), in
+    the frame of the treads, the toe block on 0 <= x' <= dx."""
+    blocks, dx = blocks_of(g), g["dx"]
+    xs = [-k * dx for k in range(len(blocks))]
+    out = []
+    for k, (base, y) in enumerate(blocks):
+        out += [(None, k, (x, base), (0., 1.)) for x in (xs[k], xs[k] + dx)]
+    for k in range(len(blocks) - 1):
+        top = min(sum(blocks[k]), sum(blocks[k + 1]))
+        ends = [top] if corners_only else [blocks[k + 1][0], top]
+        out += [(k + 1, k, (xs[k], y), (1., 0.)) for y in ends]
+    return blocks, xs, out
+
+
+def rigid_admissible(g, mu, corners_only):
+    """Whether contact forces with |T| <= mu N at the points of
+    rigid_contacts hold every block against its weight (a linear
+    program, scipy's HiGHS)."""
+    import numpy as np
+    from scipy.optimize import linprog
+    blocks, xs, contacts = rigid_contacts(g, corners_only)
+    psi, dx, m = math.radians(g["psi_p"]), g["dx"], len(contacts)
+    A, rhs = np.zeros((3 * len(blocks), 2 * m)), np.zeros(3 * len(blocks))
+    for k, (base, y) in enumerate(blocks):
+        W = g["unit_weight"] * dx * y
+        cx, cy = xs[k] + 0.5 * dx, base + 0.5 * y
+        wx, wy = W * math.sin(psi), -W * math.cos(psi)
+        rhs[3 * k:3 * k + 3] = [-wx, -wy, -(cx * wy - cy * wx)]
+    for i, (a, b, (px, py), (nx, ny)) in enumerate(contacts):
+        for block, sign in ((b, 1.), (a, -1.)):
+            if block is None:
+                continue
+            for j, (dx_, dy_) in ((2 * i, (nx, ny)), (2 * i + 1, (-ny, nx))):
+                fx, fy = sign * dx_, sign * dy_
+                A[3 * block:3 * block + 3, j] += [fx, fy, px * fy - py * fx]
+    cone = np.zeros((2 * m, 2 * m))
+    for i in range(m):
+        cone[2 * i, 2 * i:2 * i + 2] = [-mu, 1.]
+        cone[2 * i + 1, 2 * i:2 * i + 2] = [-mu, -1.]
+    bounds = [(0., None), (None, None)] * m
+    result = linprog(np.zeros(2 * m), A_ub=cone, b_ub=np.zeros(2 * m),
+                     A_eq=A, b_eq=rhs, bounds=bounds, method="highs")
+    return result.status == 0
+
+
+def rigid_limit(g, corners_only):
+    """The smallest mu with admissible forces (bisection to 1e-9)."""
+    lo, hi = 1e-3, 5.
+    while hi - lo > 1e-9:
+        mid = 0.5 * (lo + hi)
+        if rigid_admissible(g, mid, corners_only):
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
 class Geo:
     """A gmsh .geo under construction: points and lines shared by the
     rectangles that use them, each line meshed with elements of size h."""
@@ -238,7 +309,7 @@ def base_surfaces(geo, g, blocks, xs):
     tread), one under each gap (its top the lower tread, so that the
     riser faces the lower block across the gap without touching it) and
     a margin at each end; returns its surfaces and its bottom lines."""
-    dx, gap, depth, m = g["dx"], g["gap"], g["depth"], g["margin"]
+    dx, depth, m = g["dx"], g["depth"], g["margin"]
     n, bottom = len(blocks), -depth
     columns = [(xs[-1] - m, xs[-1], blocks[-1][0], ())]
     for k in range(n - 1, -1, -1):
@@ -329,6 +400,8 @@ def main():
                         help="the two-block pair of toppling_pair.prm")
     parser.add_argument("--tan-phi", type=float, help="the table at this "
                         "tan(phi) instead of at the limit")
+    parser.add_argument("--rigid", action="store_true", help="also the "
+                        "rigid-block statics limits (needs scipy)")
     parser.add_argument("--write-geo", metavar="FILE",
                         help="write the column's gmsh .geo to FILE")
     args = parser.parse_args()
@@ -336,12 +409,20 @@ def main():
         with open(args.write_geo, "w") as f:
             f.write(geo(COLUMN, blocks_of(COLUMN)))
         return 0
-    if args.pair:
-        report(PAIR, "toppling pair (parameters/toppling_pair.prm)",
-               args.tan_phi)
-    else:
-        report(COLUMN, "toppling column (parameters/toppling_column.prm)",
-               args.tan_phi)
+    g = PAIR if args.pair else COLUMN
+    report(g, "toppling pair (parameters/toppling_pair.prm)" if args.pair
+           else "toppling column (parameters/toppling_column.prm)",
+           args.tan_phi)
+    if args.rigid:
+        try:
+            import scipy  # noqa: F401
+        except ImportError:
+            sys.exit("--rigid needs scipy (e.g. /usr/bin/python3 here)")
+        for corners, what in ((False, "anywhere on the faces in contact"),
+                              (True, "at the top of the shorter block")):
+            mu = rigid_limit(g, corners)
+            print("rigid-block statics, interblock forces %s: mu = %.6f, "
+                  "F = %.6f" % (what, mu, 1. / mu))
     return 0
 
 
