@@ -9,9 +9,13 @@
 #   MBFEM=/path/to/mbfem MBFEM_BENCH_DIR=/tmp/b bash benchmarks/run.sh
 #
 # The model variants are generated as .prm files from
-# parameters/stacked_cantilevers.prm and parameters/hertz_mindlin.prm.
-# Each is also run as one bonded block with one increment and no contact,
-# the "one linear elastic solve of the same mesh" the table divides by.
+# parameters/stacked_cantilevers.prm (stacked_N: N pairs; stacked_6697, the
+# largest that fits in 24 GB here, takes some 18 GB and 20 minutes),
+# parameters/hertz_mindlin.prm, parameters/wall_16x16_2d.prm (wall_N: N
+# blocks) and parameters/cube_5x5x5.prm (gravity alone). Each is also run
+# as one bonded block with one increment and no contact, the "one linear
+# elastic solve of the same mesh" the table divides by. Do not edit this
+# file while it runs (bash reads it as it goes).
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -29,8 +33,13 @@ declare -A models=(
   [stacked_1377]="stacked_cantilevers|80,16,8|1|10|both"
   [stacked_1377_100]="stacked_cantilevers|80,16,8|1|100|both"
   [stacked_5313]="stacked_cantilevers|160,32,8|1|10|condensed"
+  [stacked_6697]="stacked_cantilevers|180,36,8|1|10|condensed"
+  [wall_16]="wall_16x16_2d|4|2|1|both"
+  [wall_64]="wall_16x16_2d|8|2|1|both"
+  [wall_256]="wall_16x16_2d|16|2|1|both"
+  [cube_125]="cube_5x5x5|5|2|1|condensed"
 )
-order="hertz hertz_fine stacked_105 stacked_369 stacked_1377 stacked_1377_100 stacked_5313"
+order="hertz hertz_fine stacked_105 stacked_369 stacked_1377 stacked_1377_100 stacked_5313 stacked_6697 wall_16 wall_64 wall_256 cube_125"
 selected=${*:-$order}
 
 make_prm() { # name bonded(0/1) -> writes $work/name[-elastic].prm
@@ -44,6 +53,23 @@ make_prm() { # name bonded(0/1) -> writes $work/name[-elastic].prm
       -e "s|Formulation *= .*|Formulation = $formulation|" \
       -e "s|Directory = .*|Directory = $work/results-$name|" \
       "$root/parameters/$base.prm" > "$out"
+  if [[ $name == wall* ]]; then
+    # An n x n wall of 1 x 0.5 blocks on a base 0.5 thick (the 16 x 16
+    # wall of parameters/ with n blocks a course and n courses).
+    local n=$mesh h
+    h=$(awk "BEGIN { print ($n + 1) / 2 }")
+    sed -i -e "s|Generator arguments = .*|Generator arguments = $((2 * n)),$((n + 1)) : 0,0 : $n,$h : true|" \
+           -e "s|Block id function *= .*|Block id function = (y > 0.5) * (1 + floor(x) + $n*floor(2*y - 1))|" \
+           "$out"
+  fi
+  if [[ $name != stacked* ]]; then
+    printf 'subsection Contact\n  set Formulation = %s\nend\n' "$formulation" >> "$out"
+  fi
+  if [[ $name == wall* || $name == cube* ]]; then
+    # The cube: gravity alone (its push, at t = 2, is left out: End time 1).
+    printf 'subsection Load history\n  set End time = 1\n  set Number of increments = %s\nend\n' "$increments" >> "$out"
+    printf 'subsection Output\n  set Directory = %s\n  set Write VTU = false\nend\n' "$work/results-$name" >> "$out"
+  fi
   if [[ $name == stacked* ]]; then
     # KLU has no nested dissection: 3D blocks factorise with MUMPS.
     printf 'subsection Linear solver\n  set Direct solver = Amesos_Mumps\nend\n' >> "$out"

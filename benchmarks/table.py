@@ -23,7 +23,7 @@ def parse(path):
         return None
     text = open(path, errors="replace").read()
     r = {"dofs": sum(int(x) for x in re.findall(r"degrees of freedom: (\d+)", text)),
-         "pairs": sum(int(x) for x in re.findall(r"\): (\d+) pairs", text)),
+         "pairs": sum(int(x) for x in re.findall(r"\)[:,] (\d+) pairs", text)),
          "phases": {}}
     m = re.search(r"mbfem: (\d+) blocks", text)
     r["blocks"] = int(m.group(1)) if m else 1
@@ -95,11 +95,14 @@ out.append("Made by `" + command.strip() + "` (benchmarks/run.sh; "
            "= both`), absolute times move by a factor of 2 or more from run to "
            "run. BLAS/LAPACK: " + blas + f" (OpenBLAS pthread, {threads} "
            "threads). Block solves and the monolithic system: Trilinos Amesos, "
-           "MUMPS for the 3D stacked models, KLU for Hertz "
+           "MUMPS for the 3D stacked models, KLU for the others "
            "(`Linear solver/Direct solver`); flexibilities: MUMPS 5.5.1 (PORD "
-           "ordering), selected entries of K^-1 (ICNTL(30)); the monolithic "
-           "reference factorises the whole Lagrange-multiplier system once per "
-           "state trial.\n")
+           "ordering), selected entries of K^-1 (ICNTL(30)), for blocks with "
+           "at least 500 contact DoFs, unit-load solves below; state system "
+           "(`Contact/State system = auto`): dense LU for the stacked and "
+           "Hertz models, sparse LU (UMFPACK) for the walls and the cube; the "
+           "monolithic reference factorises the whole Lagrange-multiplier "
+           "system once per state trial.\n")
 out.append("Times in seconds (wall). Phases are those of the condensed "
            "formulation (the timer table each run prints); *condensed* and "
            "*monolithic* are the program's own 'time of the contact "
@@ -128,4 +131,7 @@ if len({f[0] for f in fits}) >= 2:
                f"({', '.join(str(f[0]) for f in fits)} pairs): condensed time "
                f"~ pairs^{fit([(f[0], f[1]) for f in fits]):.2f}, peak memory "
                f"~ pairs^{fit([(f[0], f[2]) for f in fits]):.2f}.\n")
+notes = os.path.join(os.path.dirname(os.path.abspath(__file__)), "notes.md")
+if os.path.exists(notes):
+    out.append(open(notes).read())
 print("\n".join(out))
