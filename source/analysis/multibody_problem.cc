@@ -235,7 +235,8 @@ namespace mbfem
         std::make_unique<ContactSolver<dim>>(pairs,
                                              contact_parameters.max_iterations,
                                              formulation,
-                                             parameters.linear_solver.package);
+                                             parameters.linear_solver.package,
+                                             contact_parameters.state_system);
       solver->setup(blocks);
       return solver;
     };

@@ -1,7 +1,10 @@
 #include <mbfem/base/exceptions.h>
 #include <mbfem/contact/contact_solver.h>
 
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 
 #include <algorithm>
 #include <iomanip>
@@ -56,14 +59,17 @@ namespace mbfem
 
 
   template <int dim>
-  ContactSolver<dim>::ContactSolver(std::vector<ContactPair<dim>> pairs,
-                                    const unsigned int       max_iterations,
-                                    const ContactFormulation formulation,
-                                    const std::string       &solver_package)
+  ContactSolver<dim>::ContactSolver(
+    std::vector<ContactPair<dim>>        pairs,
+    const unsigned int                   max_iterations,
+    const ContactFormulation             formulation,
+    const std::string                   &solver_package,
+    const ContactParameters::StateSystem state_system)
     : contact_pairs(std::move(pairs))
     , max_iterations(max_iterations)
     , n_pairs(contact_pairs.size())
     , contact_formulation(formulation)
+    , state_system(state_system)
   {
     if (formulation == ContactFormulation::monolithic)
       monolithic = std::make_unique<MonolithicSystem<dim>>(solver_package);
@@ -432,7 +438,7 @@ namespace mbfem
       }
 
     CondensedSystem &system = condensed_system;
-    if (system.coefficients != key || system.matrix.m() != n)
+    if (system.coefficients != key || system.size != n)
       {
         system.coefficients = key;
         system.unknowns     = unknowns;
@@ -454,7 +460,7 @@ namespace mbfem
       }
     for (unsigned int a = 0; a < n_alpha_total; ++a)
       rhs(n_rho + a) = -external_resultant[a] * scale;
-    system.matrix.solve(rhs);
+    system.solve(rhs);
 
     solution.reinit(n_r + n_alpha_total);
     for (unsigned int i = 0; i < n_rho; ++i)
@@ -481,6 +487,14 @@ namespace mbfem
     for (unsigned int i = 0; i < n_rho; ++i)
       column_of[unknowns[i]] = i;
 
+    system.size = n;
+    system.sparse_lu.reset();
+    if (use_sparse(unknowns))
+      {
+        system.matrix.reinit(0, 0);
+        assemble_condensed_sparse(equations, system);
+        return;
+      }
     LAPACKFullMatrix<double> &matrix = system.matrix;
     matrix.reinit(n, n);
     for (unsigned int i = 0; i < n_rho; ++i)
@@ -522,19 +536,162 @@ namespace mbfem
       {
         return; // an exactly zero pivot
       }
+    estimate_condition(system, norm);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::estimate_condition(CondensedSystem &system,
+                                         const double     norm) const
+  {
     // Condition estimate ||A||_1 ||A^{-1}||_1 from two pseudo-random
     // right-hand sides (LAPACKFullMatrix's own estimate is for Cholesky).
-    double inverse_norm = 0.;
+    const unsigned int n            = system.size;
+    double             inverse_norm = 0.;
     for (unsigned int trial = 0; trial < 2; ++trial)
       {
         Vector<double> probe(n);
         for (unsigned int i = 0; i < n; ++i)
           probe(i) = std::sin(1.3 + 0.7 * i * (trial + 1)) + 0.1;
         const double probe_norm = probe.l1_norm();
-        matrix.solve(probe);
+        system.solve(probe);
         inverse_norm = std::max(inverse_norm, probe.l1_norm() / probe_norm);
       }
+    // A NaN (a sparse LU that met a zero pivot late) is not regular either.
     system.regular = norm * inverse_norm < 1e12;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::CondensedSystem::solve(Vector<double> &x) const
+  {
+    if (sparse_lu)
+      sparse_lu->solve(x);
+    else
+      matrix.solve(x);
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::use_sparse(
+    const std::vector<unsigned int> &unknowns) const
+  {
+    if (state_system != ContactParameters::StateSystem::automatic)
+      return state_system == ContactParameters::StateSystem::sparse;
+    const double n = unknowns.size() + n_alpha_total;
+    if (n < 1000)
+      return false;
+    // At most how many entries a row of pair k can have: the pair
+    // directions of every side on the blocks k touches, and their modes.
+    double entries = 0.;
+    for (const unsigned int row : unknowns)
+      for (const auto &[b, s] : pair_sides[row / dim])
+        entries += dim * block_flexibility[b].pairs.size() + dim * (dim + 1);
+    return entries <= 0.1 * n * n;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::assemble_condensed_sparse(
+    const std::vector<PairEquation<dim>> &equations,
+    CondensedSystem                      &system) const
+  {
+    const std::vector<unsigned int> &unknowns = system.unknowns;
+    const unsigned int               n_rho    = unknowns.size();
+    const unsigned int               n        = system.size;
+    const double                     scale    = flexibility_scale;
+    std::vector<int>                 column_of(n_pairs * dim, -1);
+    for (unsigned int i = 0; i < n_rho; ++i)
+      column_of[unknowns[i]] = i;
+
+    // The rows of assemble_condensed(), with C_hat's entries only where
+    // two pairs share a block (H_b of that block), in a map per row.
+    std::vector<std::map<unsigned int, double>> rows(n);
+    for (unsigned int i = 0; i < n_rho; ++i)
+      {
+        const unsigned int       row       = unknowns[i];
+        const unsigned int       k         = row / dim;
+        const PairEquation<dim> &eq        = equations[row];
+        const double             row_scale = eq.has_force_terms() ? scale : 1.;
+        for (unsigned int e = 0; e < dim; ++e)
+          {
+            const double a = eq.displacement_coefficients[e];
+            if (a != 0.)
+              add_flexibility_row(k, e, row_scale * a, column_of, rows[i]);
+            if (a != 0.)
+              for (unsigned int b = 0; b < n_alpha_total; ++b)
+                if (coupling(k * dim + e, b) != 0.)
+                  rows[i][n_rho + b] +=
+                    row_scale * a * coupling(k * dim + e, b);
+            if (eq.force_coefficients[e] != 0. && column_of[k * dim + e] >= 0)
+              rows[i][column_of[k * dim + e]] += eq.force_coefficients[e];
+          }
+      }
+    // Equilibrium of the floating blocks: P^T r = -F_e.
+    for (unsigned int j = 0; j < n_rho; ++j)
+      for (unsigned int a = 0; a < n_alpha_total; ++a)
+        if (coupling(unknowns[j], a) != 0.)
+          rows[n_rho + a][j] = coupling(unknowns[j], a);
+
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (const auto &[j, value] : rows[i])
+        dsp.add(i, j);
+    SparsityPattern pattern;
+    pattern.copy_from(dsp);
+    SparseMatrix<double> matrix(pattern);
+    for (unsigned int i = 0; i < n; ++i)
+      for (const auto &[j, value] : rows[i])
+        matrix.set(i, j, value);
+
+    system.regular   = false;
+    system.sparse_lu = std::make_unique<SparseDirectUMFPACK>();
+    try
+      {
+        system.sparse_lu->factorize(matrix);
+      }
+    catch (const std::exception &)
+      {
+        system.sparse_lu.reset();
+        return; // UMFPACK found the matrix singular
+      }
+    estimate_condition(system, matrix.l1_norm());
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::add_flexibility_row(
+    const unsigned int              k,
+    const unsigned int              e,
+    const double                    factor,
+    const std::vector<int>         &column_of,
+    std::map<unsigned int, double> &row) const
+  {
+    // (C_hat rho)_(k, e) / scale = sum over the blocks b of pair k's
+    // sides s, and every side t on b: H_b(s e, t f) x_(t f) / scale.
+    for (const auto &[b, s] : pair_sides[k])
+      {
+        const BlockFlexibility &flexibility = block_flexibility[b];
+        for (unsigned int t = 0; t < flexibility.pairs.size(); ++t)
+          for (unsigned int f = 0; f < dim; ++f)
+            {
+              const int column = column_of[flexibility.pairs[t] * dim + f];
+              if (column >= 0)
+                row[column] += factor *
+                               flexibility.matrix(s * dim + e, t * dim + f) /
+                               flexibility_scale;
+            }
+      }
   }
 
 
@@ -1197,10 +1354,19 @@ namespace mbfem
       }
     const unsigned int       q = n_alpha_total;
     LAPACKFullMatrix<double> gram(q, q);
+    // A row of P_hat couples the modes of the (at most two) blocks of its
+    // pair only: add the products of its non-zero entries.
+    std::vector<std::pair<unsigned int, double>> entries;
     for (const unsigned int row : rows)
-      for (unsigned int a = 0; a < q; ++a)
-        for (unsigned int c = 0; c < q; ++c)
-          gram(a, c) += coupling(row, a) * coupling(row, c);
+      {
+        entries.clear();
+        for (unsigned int a = 0; a < q; ++a)
+          if (coupling(row, a) != 0.)
+            entries.emplace_back(a, coupling(row, a));
+        for (const auto &[a, x] : entries)
+          for (const auto &[c, y] : entries)
+            gram(a, c) += x * y;
+      }
     double largest = 0.;
     for (unsigned int a = 0; a < q; ++a)
       largest = std::max(largest, gram(a, a));

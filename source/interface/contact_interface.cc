@@ -110,6 +110,17 @@ namespace mbfem
         "increments; their pair states, forces (relative to the largest pair "
         "force), gaps and slips (relative to the largest displacement) are "
         "compared at every increment, and both are timed.");
+      prm.declare_entry(
+        "State system",
+        "auto",
+        Patterns::Selection("auto|dense|sparse"),
+        "How the condensed formulation factorises the system of each state "
+        "trial (the forces of the pairs that are not open and the floating "
+        "blocks' rigid-body amplitudes). dense: LU by LAPACK. sparse: LU by "
+        "UMFPACK, with an entry only where two pairs share a block, which "
+        "pays when many blocks each touch a few neighbours (walls, jointed "
+        "rock). auto: sparse when the system has at least 1000 unknowns "
+        "and at most a tenth of its entries can be non-zero, else dense.");
     }
 
     /** Contact/Exact traction: 2D tractions to measure the pairs' against. */
@@ -258,6 +269,10 @@ namespace mbfem
       formulation = (choice == "monolithic" ? Formulation::monolithic :
                      choice == "both"       ? Formulation::both :
                                               Formulation::condensed);
+      const std::string system = prm.get("State system");
+      state_system             = (system == "dense"  ? StateSystem::dense :
+                                  system == "sparse" ? StateSystem::sparse :
+                                                       StateSystem::automatic);
       prm.enter_subsection("Exact traction");
       {
         compute_traction_errors = prm.get_bool("Compute errors");

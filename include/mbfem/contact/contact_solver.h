@@ -10,7 +10,9 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/sparse_direct.h>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -103,7 +105,9 @@ namespace mbfem
       std::vector<ContactPair<dim>> pairs,
       const unsigned int            max_iterations,
       const ContactFormulation      formulation = ContactFormulation::condensed,
-      const std::string            &solver_package = "Amesos_Klu");
+      const std::string            &solver_package = "Amesos_Klu",
+      const ContactParameters::StateSystem state_system =
+        ContactParameters::StateSystem::automatic);
 
     /**
      * Condensed: the dense flexibility C_a and coupling P, from every
@@ -688,10 +692,18 @@ namespace mbfem
     {
       std::vector<double>       coefficients; // the key
       std::vector<unsigned int> unknowns;     // active rows of rho
+      unsigned int              size = 0;
       LAPACKFullMatrix<double>  matrix;
-      bool                      regular = false;
+      /** The sparse LU instead of matrix (see use_sparse()). */
+      std::unique_ptr<SparseDirectUMFPACK> sparse_lu;
+      bool                                 regular = false;
+
+      /** x = A^{-1} x with whichever factorisation was made. */
+      void
+      solve(Vector<double> &x) const;
     };
-    mutable CondensedSystem condensed_system;
+    mutable CondensedSystem              condensed_system;
+    const ContactParameters::StateSystem state_system;
 
     /**
      * Builds and LU-factorises the system of @p equations over
@@ -701,6 +713,35 @@ namespace mbfem
     void
     assemble_condensed(const std::vector<PairEquation<dim>> &equations,
                        CondensedSystem                      &system) const;
+
+    /**
+     * Whether the system over @p unknowns is factorised sparse: by the
+     * State system parameter, or (auto) when it has at least 1000 unknowns
+     * and at most a tenth of its entries can be non-zero (two pairs share
+     * no block elsewhere).
+     */
+    bool
+    use_sparse(const std::vector<unsigned int> &unknowns) const;
+
+    /** The same system as assemble_condensed(), as a sparse matrix. */
+    void
+    assemble_condensed_sparse(const std::vector<PairEquation<dim>> &equations,
+                              CondensedSystem &system) const;
+
+    /**
+     * Adds @p factor times row (k, e) of C_hat / flexibility_scale to
+     * @p row, over the columns (@p column_of) of the unknowns.
+     */
+    void
+    add_flexibility_row(const unsigned int              k,
+                        const unsigned int              e,
+                        const double                    factor,
+                        const std::vector<int>         &column_of,
+                        std::map<unsigned int, double> &row) const;
+
+    /** Sets system.regular from a condition estimate of the factorisation. */
+    void
+    estimate_condition(CondensedSystem &system, const double norm) const;
 
     /** P_hat = R P in the pairs' frames. */
     FullMatrix<double> coupling;

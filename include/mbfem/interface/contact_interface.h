@@ -74,6 +74,18 @@ namespace mbfem
     };
     Formulation formulation = Formulation::condensed;
 
+    /**
+     * How the condensed state system is factorised: dense LU (LAPACK) or
+     * sparse LU (UMFPACK), or chosen by its size and fill (see the entry).
+     */
+    enum class StateSystem : unsigned char
+    {
+      automatic,
+      dense,
+      sparse
+    };
+    StateSystem state_system = StateSystem::automatic;
+
     /** Whether the condensed (multi-body) formulation runs. */
     bool
     runs_condensed() const
