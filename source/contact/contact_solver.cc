@@ -7,6 +7,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <map>
 #include <numeric>
@@ -483,11 +484,11 @@ namespace mbfem
     const unsigned int               n_rho    = unknowns.size();
     const unsigned int               n        = n_rho + n_alpha_total;
     const double                     scale    = flexibility_scale;
-    std::vector<int>                 column_of(n_r, -1);
-    for (unsigned int i = 0; i < n_rho; ++i)
-      column_of[unknowns[i]] = i;
 
-    system.size = n;
+    // Not regular until factorised: a throw below must not leave the
+    // cache (keyed already) saying otherwise.
+    system.regular = false;
+    system.size    = n;
     system.sparse_lu.reset();
     if (use_sparse(unknowns))
       {
@@ -495,6 +496,9 @@ namespace mbfem
         assemble_condensed_sparse(equations, system);
         return;
       }
+    std::vector<int> column_of(n_r, -1);
+    for (unsigned int i = 0; i < n_rho; ++i)
+      column_of[unknowns[i]] = i;
     LAPACKFullMatrix<double> &matrix = system.matrix;
     matrix.reinit(n, n);
     for (unsigned int i = 0; i < n_rho; ++i)
@@ -526,7 +530,6 @@ namespace mbfem
       for (unsigned int j = 0; j < n_rho; ++j)
         matrix(n_rho + a, j) = coupling(unknowns[j], a);
 
-    system.regular    = false;
     const double norm = matrix.l1_norm();
     try
       {
@@ -557,10 +560,13 @@ namespace mbfem
           probe(i) = std::sin(1.3 + 0.7 * i * (trial + 1)) + 0.1;
         const double probe_norm = probe.l1_norm();
         system.solve(probe);
-        inverse_norm = std::max(inverse_norm, probe.l1_norm() / probe_norm);
+        const double ratio = probe.l1_norm() / probe_norm;
+        // Overflow past a tiny pivot (std::max would drop a NaN).
+        if (!std::isfinite(ratio))
+          return;
+        inverse_norm = std::max(inverse_norm, ratio);
       }
-    // A NaN (a sparse LU that met a zero pivot late) is not regular either.
-    system.regular = norm * inverse_norm < 1e12;
+    system.regular = std::isfinite(norm) && norm * inverse_norm < 1e12;
   }
 
 
@@ -588,7 +594,8 @@ namespace mbfem
     if (n < 1000)
       return false;
     // At most how many entries a row of pair k can have: the pair
-    // directions of every side on the blocks k touches, and their modes.
+    // directions of every side on the blocks k touches, and twice their
+    // modes (P_hat's columns and, transposed, the equilibrium rows).
     double entries = 0.;
     for (const unsigned int row : unknowns)
       for (const auto &[b, s] : pair_sides[row / dim])
@@ -625,12 +632,13 @@ namespace mbfem
           {
             const double a = eq.displacement_coefficients[e];
             if (a != 0.)
-              add_flexibility_row(k, e, row_scale * a, column_of, rows[i]);
-            if (a != 0.)
-              for (unsigned int b = 0; b < n_alpha_total; ++b)
-                if (coupling(k * dim + e, b) != 0.)
-                  rows[i][n_rho + b] +=
-                    row_scale * a * coupling(k * dim + e, b);
+              {
+                add_flexibility_row(k, e, row_scale * a, column_of, rows[i]);
+                for (unsigned int b = 0; b < n_alpha_total; ++b)
+                  if (coupling(k * dim + e, b) != 0.)
+                    rows[i][n_rho + b] +=
+                      row_scale * a * coupling(k * dim + e, b);
+              }
             if (eq.force_coefficients[e] != 0. && column_of[k * dim + e] >= 0)
               rows[i][column_of[k * dim + e]] += eq.force_coefficients[e];
           }
@@ -652,16 +660,17 @@ namespace mbfem
       for (const auto &[j, value] : rows[i])
         matrix.set(i, j, value);
 
-    system.regular   = false;
     system.sparse_lu = std::make_unique<SparseDirectUMFPACK>();
     try
       {
         system.sparse_lu->factorize(matrix);
       }
-    catch (const std::exception &)
+    catch (const SparseDirectUMFPACK::ExcUMFPACKError &)
       {
+        // A zero pivot (UMFPACK's warning status 1, thrown by deal.II);
+        // running out of memory and the like pass on.
         system.sparse_lu.reset();
-        return; // UMFPACK found the matrix singular
+        return;
       }
     estimate_condition(system, matrix.l1_norm());
   }

@@ -120,7 +120,9 @@ namespace mbfem
         "UMFPACK, with an entry only where two pairs share a block, which "
         "pays when many blocks each touch a few neighbours (walls, jointed "
         "rock). auto: sparse when the system has at least 1000 unknowns "
-        "and at most a tenth of its entries can be non-zero, else dense.");
+        "and at most a tenth of its entries can be non-zero, else dense. "
+        "(The semismooth Newton method, tried where the state iteration "
+        "and the load path fail, still factorises its Jacobian dense.)");
     }
 
     /** Contact/Exact traction: 2D tractions to measure the pairs' against. */

@@ -682,9 +682,10 @@ namespace mbfem
     flexibility_entry(const unsigned int row, const unsigned int column) const;
 
     /**
-     * The dense system of the last solve_condensed(), over the unknowns
-     * its states leave free (the directions of the pairs that are not
-     * open, and the floating modes), LU-factorised: a trial whose
+     * The system of the last solve_condensed(), over the unknowns its
+     * states leave free (the directions of the pairs that are not open,
+     * and the floating modes), LU-factorised, dense in matrix or sparse in
+     * sparse_lu (then matrix is empty; see use_sparse()): a trial whose
      * equations have the same coefficients (only their values differ)
      * reuses it. A cache, hence mutable.
      */
