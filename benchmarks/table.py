@@ -112,7 +112,7 @@ out.append("Times in seconds (wall). Phases are those of the condensed "
            "set size from /usr/bin/time -v, of the whole run (both "
            "formulations where both ran).\n")
 head = ["model", "DoFs", "pairs", "blocks", "incr."] + [p[1] for p in PHASES] + \
-       ["condensed", "monolithic", "mono / cond", "whole run", "peak GB", "whole / elastic"]
+       ["condensed", "monolithic", "mono / cond", "whole run", "peak GiB", "whole / elastic"]
 out.append("| " + " | ".join(head) + " |")
 out.append("|" + "---|" * len(head))
 for name, r, elastic in rows:
