@@ -11,7 +11,11 @@ run: the exit code and what it means,
   converged        exit 0: every increment found equilibrium
   certified-none   exit 2: no statically admissible contact forces exist
   not-converged    exit 3: the iteration failed although admissible forces
-                   exist (a failure of the iteration)
+                   exist, also along the mechanism of the LP's limit
+  none-along-mechanism
+                   exit 4: admissible forces exist, but none with the
+                   shear against the slip of that mechanism (limit
+                   equilibrium along it fails)
   error            exit 1: anything else (also an undecided certificate)
 
 the state iterations summed over the increments, how many increments the
@@ -20,8 +24,11 @@ concluded (P/N/C; the fast iteration alone did not), how many step
 halvings were tried, the wall time and the first line of the message.
 Below the limit (lambda < 1) 'converged' is expected; above it
 'certified-none', except where a model's statics (LP) limit lies above its
-closed form (the 3D wedge: 1.3737 against Hoek and Bray's 1.3249), where
-between the two either verdict is accepted and the line says so.
+closed form (the 3D wedge: 1.3737 against Hoek and Bray's 1.3249). Between
+the two, the wedge must end with 'none-along-mechanism' (Hoek and Bray's
+limit is the limit equilibrium of the LP's mechanism, the slide along the
+line of intersection); for the others any verdict but 'converged' above
+the closed form is accepted, and the line says so.
 
 The matrices of issue 20 (--matrix, default all):
 
@@ -64,7 +71,8 @@ import tempfile
 import time
 
 SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-OUTCOME = {0: "converged", 2: "certified-none", 3: "not-converged"}
+OUTCOME = {0: "converged", 2: "certified-none", 3: "not-converged",
+           4: "none-along-mechanism"}
 MATRICES = ["incline", "dam", "dam-c", "toppling", "column", "wedge"]
 
 
@@ -72,7 +80,8 @@ class Case:
     """One model at several multiples of its limit."""
 
     def __init__(self, matrix, name, base, f_limit, tan_phi, cohesion,
-                 lambdas, extra="", lp_limit=None, names=()):
+                 lambdas, extra="", lp_limit=None, names=(),
+                 kinematic=False):
         self.matrix, self.name, self.base = matrix, name, base
         self.f_limit, self.tan_phi, self.cohesion = f_limit, tan_phi, cohesion
         self.lambdas, self.extra = lambdas, extra
@@ -81,13 +90,21 @@ class Case:
         self.lp_limit = lp_limit or f_limit
         # Blocks the certificate's mechanism must name beyond the limit.
         self.names = names
+        # The closed form is the limit equilibrium of the mechanism of the
+        # LP's limit (the wedge: Hoek and Bray along the line of
+        # intersection), so between the two limits the run must end with
+        # exit code 4 (or 2), not 3.
+        self.kinematic = kinematic
 
     def expected(self, lam):
         factor = lam * self.f_limit
         if factor < self.f_limit:
             return ("converged",)
+        if factor <= self.lp_limit and self.kinematic:
+            return ("none-along-mechanism", "certified-none")
         if factor <= self.lp_limit:
-            return ("converged", "certified-none", "not-converged")
+            return ("converged", "certified-none", "none-along-mechanism",
+                    "not-converged")
         return ("certified-none",)
 
 
@@ -191,9 +208,9 @@ def wedge_cases(quick):
           + section("Mesh", Mesh_file=os.path.join(SOURCE, "meshes",
                                                    "wedge_3d_4.msh")))
     return [Case("wedge", "wedge 3D p=1", "wedge_3d.prm", limit, t35, 0.,
-                 lambdas, "", lp_limit=1.3737),
+                 lambdas, "", lp_limit=1.3737, kinematic=True),
             Case("wedge", "wedge 3D p=2", "wedge_3d.prm", limit, t35, 0.,
-                 lambdas, p2, lp_limit=1.3737)]
+                 lambdas, p2, lp_limit=1.3737, kinematic=True)]
 
 
 def cases(work, quick, matrices):
@@ -271,6 +288,13 @@ def summarise(stdout, stderr):
     return iterations, path, halvings, strength, message, stderr
 
 
+def mechanism_factor(stderr):
+    """The certificate's mechanism factor (limit equilibrium along the
+    mechanism of the LP's limit), or None."""
+    m = re.search(r"divided by up to ([0-9.]+) \(mechanism factor", stderr)
+    return float(m.group(1)) if m else None
+
+
 def run(mbfem, work, case, lam):
     prm = write_case(work, case, lam)
     start = time.time()
@@ -287,7 +311,7 @@ def verdict(case, lam, code, stderr):
     expected = case.expected(lam)
     if outcome not in expected:
         return "[expected %s]" % " or ".join(expected)
-    if outcome == "certified-none":
+    if outcome in ("certified-none", "none-along-mechanism"):
         missing = [n for n in case.names
                    if not re.search(n + r": translation along", stderr)]
         if missing:
@@ -370,12 +394,13 @@ def main():
         return bisect_all(args, work, matrices)
     if args.markdown:
         print("| case | lambda | F | exit | result | iterations | "
-              "increments by load path/Newton/continuation | halvings | LP limit | s | message |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|")
+              "increments by load path/Newton/continuation | halvings | "
+              "LP limit | mechanism limit | s | message |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     else:
-        print("%-24s %7s %8s %4s %-14s %5s %4s %4s %8s %7s  %s" % (
+        print("%-24s %7s %8s %4s %-20s %5s %4s %4s %8s %8s %7s  %s" % (
             "case", "lambda", "F", "exit", "result", "iter", "P/N/C", "halv",
-            "LP", "seconds", "first message"))
+            "LP", "mech", "seconds", "first message"))
     wrong = 0
     start = time.time()
     for case in cases(work, args.quick, matrices):
@@ -390,15 +415,18 @@ def main():
             # The certificate's LP limit, F x its strength factor (at the
             # loads of the failing step).
             lp = "%.5f" % (factor * strength) if strength else "-"
+            # The mechanism's limit equilibrium, F x its factor.
+            kinematic = mechanism_factor(stderr)
+            mech = "%.5f" % (factor * kinematic) if kinematic else "-"
             row = (case.name, lam, factor, code, OUTCOME.get(code, "error"),
-                   iterations, path, halvings, lp, seconds,
+                   iterations, path, halvings, lp, mech, seconds,
                    (note + " " if note else "") + message[:100])
             if args.markdown:
                 print("| %s | %.4f | %.5f | %d | %s | %d | %s | %d | %s | "
-                      "%.1f | %s |" % row, flush=True)
+                      "%s | %.1f | %s |" % row, flush=True)
             else:
-                print("%-24s %7.4f %8.5f %4d %-14s %5d %5s %4d %8s %7.1f  %s"
-                      % row, flush=True)
+                print("%-24s %7.4f %8.5f %4d %-20s %5d %5s %4d %8s %8s %7.1f"
+                      "  %s" % row, flush=True)
     print("%d run(s) differ from the limit's verdict; %.0f s in all; work "
           "folder %s" % (wrong, time.time() - start, work))
     return 1 if wrong else 0

@@ -154,7 +154,7 @@ main(int argc, char *argv[])
       std::cerr << "\nmbfem: error\n";
       exc.print_info(std::cerr);
       std::cerr << "Aborting." << std::endl;
-      return mbfem::exit_code(exc); // 2, 3: see base/exceptions.h
+      return mbfem::exit_code(exc); // 2, 3, 4: see base/exceptions.h
     }
   catch (std::exception &exc)
     {

@@ -402,7 +402,9 @@ namespace mbfem
      * Ends the run after an increment failed for good (after any step
      * halvings) with the verdict of the statics certificate for the loads
      * of the last step tried: none exist (ExcNoEquilibrium, exit code 2),
-     * some exist although the iteration failed
+     * some exist but none along the mechanism of the statics limit with
+     * the shear against the slip (ExcNoEquilibriumAlongMechanism, 4), some
+     * exist along it too although the iteration failed
      * (ExcNotConvergedButAdmissible, 3), or, undecided or without
      * interfaces, the failure as it was (ExcIncrementNotConverged, 1).
      */
@@ -436,12 +438,41 @@ namespace mbfem
                   << text.str();
           throw Exceptions::ExcNoEquilibrium(verdict.str());
         }
+      // A mechanism along which no strength holds the loads (factor
+      // below 0.001: blocks lifting off, as the LP's duals can give for a
+      // column of blocks) says nothing of the model: exit code 3 then.
+      if (result.verdict == Verdict::admissible &&
+          !result.limit_mechanism.empty() && !result.mechanism_factor_bounded &&
+          result.mechanism_factor < 1.)
+        {
+          std::ostringstream verdict;
+          verdict << "No equilibrium along the mechanism at t = " << time
+                  << ": statics alone admits contact forces, but with the "
+                     "shear of every sliding pair against its slip (limit "
+                     "equilibrium, as Hoek and Bray's and Goodman and "
+                     "Bray's analyses take it) none balance the loads, so "
+                     "the blocks cannot move that way in equilibrium (the "
+                     "statics certificate below). This is not a proof that "
+                     "no equilibrium exists: a state in which they do not "
+                     "move so might hold them, and the state iteration "
+                     "found none.\n    "
+                  << text.str();
+          throw Exceptions::ExcNoEquilibriumAlongMechanism(verdict.str());
+        }
       if (result.verdict == Verdict::admissible)
         throw Exceptions::ExcNotConvergedButAdmissible(
           text.str() +
-          "    The state iteration failed on a model that has a solution "
-          "with these joint strengths: a failure of the iteration, not of "
-          "the model.");
+          (result.mechanism_factor_bounded && result.mechanism_factor < 1. ?
+             "    Statics admits forces with these joint strengths; the "
+             "mechanism of its limit is none the blocks could be held "
+             "along at any strength, so it says nothing here. The state "
+             "iteration found no equilibrium: a failure of the iteration, "
+             "or of the model beyond what statics can prove." :
+             "    Statics and limit equilibrium along the mechanism both "
+             "admit forces with these joint strengths, and the state "
+             "iteration found no equilibrium: most likely a failure of the "
+             "iteration, not of the model (statics cannot prove that the "
+             "elastic model has a solution)."));
       throw Exceptions::ExcIncrementNotConverged(text.str());
     }
   } // namespace
@@ -589,9 +620,12 @@ namespace mbfem
       contact->blocks_without_stuck_pairs();
     if (sliding.empty())
       return;
-    const auto result = contact->certify();
-    if (result.verdict != StaticAdmissibility<dim>::Verdict::none)
+    // Only the verdict decides here: the mechanism factor's LPs wait
+    // until it is none.
+    if (contact->certify(false).verdict !=
+        StaticAdmissibility<dim>::Verdict::none)
       return;
+    const auto  result = contact->certify();
     std::string names;
     for (const auto &name : sliding)
       names += (names.empty() ? "" : ", ") + name;

@@ -11,6 +11,8 @@ namespace mbfem
       return 2;
     if (dynamic_cast<const Exceptions::ExcNotConvergedButAdmissible *>(&e))
       return 3;
+    if (dynamic_cast<const Exceptions::ExcNoEquilibriumAlongMechanism *>(&e))
+      return 4;
     return 1;
   }
 

@@ -1644,7 +1644,7 @@ namespace mbfem
 
   template <int dim>
   typename StaticAdmissibility<dim>::Result
-  ContactSolver<dim>::certify() const
+  ContactSolver<dim>::certify(const bool with_mechanism_factor) const
   {
     using Certificate = StaticAdmissibility<dim>;
     std::vector<typename Certificate::Candidate> candidates(n_pairs);
@@ -1660,7 +1660,8 @@ namespace mbfem
     std::vector<double> resultant = external_resultant;
     resultant.resize(n_alpha_total, 0.);
     const Certificate certificate(std::move(candidates), coupling, resultant);
-    typename Certificate::Result result = certificate.solve();
+    typename Certificate::Result result =
+      certificate.solve(with_mechanism_factor);
 
     std::ostringstream text;
     text << std::fixed << std::setprecision(6);
@@ -1699,8 +1700,42 @@ namespace mbfem
           text << describe_mechanism(result.mechanism);
           break;
       }
+    text << describe_mechanism_factor(result);
     result.description = text.str();
     return result;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactSolver<dim>::describe_mechanism_factor(
+    const typename StaticAdmissibility<dim>::Result &result) const
+  {
+    if (result.limit_mechanism.empty())
+      return "";
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(6) << "\n    Limit equilibrium";
+    if (result.verdict == StaticAdmissibility<dim>::Verdict::none)
+      text << " along that mechanism";
+    else
+      text << " along the mechanism of the statics limit"
+           << describe_mechanism(result.limit_mechanism) << ",";
+    text << " with the shear of every sliding pair against its slip (at "
+            "most c A + mu N), open pairs carrying nothing and those at rest "
+            "anything in their cone: the joints' strength could be divided "
+            "by "
+         << (result.mechanism_factor_bounded ?
+               (result.mechanism_factor > 1. ? std::string("above 1000") :
+                                               std::string("less than 0.001")) :
+               "up to " + std::to_string(result.mechanism_factor))
+         << " (mechanism factor"
+         << (dim == 3 && result.limit_mechanism_freedom != 1 ?
+               "; shear within pi/64 of the mechanism's slip, as the LP "
+               "fixes its direction to that" :
+               "")
+         << ").";
+    return text.str();
   }
 
 

@@ -419,6 +419,62 @@ namespace mbfem
 
 
   template <int dim>
+  bool
+  ContactSolver<dim>::close_along(Trial                &trial,
+                                  const Vector<double> &motion,
+                                  std::vector<double>  &gap) const
+  {
+    // The relative motion of each open pair along the mechanism, and the
+    // amplitude at which it closes its gap.
+    unsigned int                first     = numbers::invalid_unsigned_int;
+    double                      amplitude = std::numeric_limits<double>::max();
+    Tensor<1, dim>              first_motion;
+    double                      largest = 0.;
+    std::vector<Tensor<1, dim>> w(n_pairs);
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        for (unsigned int e = 0; e < dim; ++e)
+          if (!held[k][e])
+            for (unsigned int a = 0; a < n_alpha_total; ++a)
+              w[k][e] += coupling(k * dim + e, a) * motion(a);
+        largest = std::max(largest, w[k].norm());
+      }
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        if (trial.state[k] != ContactState::open || contact_pairs[k].tied ||
+            held[k][0] || !(w[k][0] < -1e-6 * largest))
+          continue;
+        const double closes = std::max(gap[k], 0.) / -w[k][0];
+        if (closes < amplitude)
+          {
+            amplitude    = closes;
+            first        = k;
+            first_motion = w[k];
+          }
+      }
+    if (first == numbers::invalid_unsigned_int)
+      return false;
+    // The gaps once the blocks have moved so far.
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      gap[k] += amplitude * w[k][0];
+    Tensor<1, dim> slip;
+    for (unsigned int e = 1; e < dim; ++e)
+      slip[e] = first_motion[e];
+    if (slip.norm() > 1e-6 * largest && amplitude > 0.)
+      {
+        trial.state[first]               = ContactState::slip;
+        trial.slip_direction[first]      = slip / slip.norm();
+        trial.direction_stiffness[first] = 0.;
+      }
+    else
+      trial.state[first] = ContactState::stick;
+    trial.tensile_slip[first] = false;
+    return true;
+  }
+
+
+
+  template <int dim>
   unsigned int
   ContactSolver<dim>::load_path(const unsigned int increment)
   {
@@ -435,6 +491,10 @@ namespace mbfem
     std::set<std::string> seen_here; // states met at this s
     const unsigned int    max_switches = 20 * n_pairs + 100;
     Segment               segment;
+    // Every pair's normal gap at the present s (for close_along()).
+    std::vector<double> gap(n_pairs);
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      gap[k] = contact_pairs[k].initial_gap + committed_displacement[k][0];
     for (;;)
       {
         if (!solve_segment(trial, s, segment) ||
@@ -442,12 +502,15 @@ namespace mbfem
           {
             // A mechanism whose motion would reverse the slip of some
             // pairs is not the limit: those pairs stick, and the path goes
-            // on from the same s.
+            // on from the same s. Nor is one along which a gap closes: the
+            // blocks move until it does.
             set_load_fraction(1.);
             const Vector<double> free_motion = mechanism_motion(trial);
             if (free_motion.size() > 0)
               {
-                const unsigned int n = unload_against(trial, free_motion);
+                unsigned int n = unload_against(trial, free_motion);
+                if (n == 0 && close_along(trial, free_motion, gap))
+                  n = 1;
                 switches += n;
                 if (n > 0 && seen_here.insert(signature(trial)).second &&
                     switches <= max_switches)
@@ -462,6 +525,12 @@ namespace mbfem
         if (s_event > s + 1e-9)
           seen_here.clear();
         s = s_event;
+        for (unsigned int k = 0; k < n_pairs; ++k)
+          {
+            Tensor<1, dim> rho, d;
+            segment.at(k, event.t, rho, d);
+            gap[k] = contact_pairs[k].initial_gap + d[0];
+          }
         switch_state(trial, segment, event);
         ++switches;
         AssertThrow(seen_here.insert(signature(trial)).second &&

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 
 namespace mbfem
 {
@@ -273,13 +274,10 @@ namespace mbfem
 
   template <int dim>
   double
-  StaticAdmissibility<dim>::search_strength_factor(bool         &bounded,
-                                                   unsigned int &n_solves) const
+  StaticAdmissibility<dim>::search_factor(
+    const std::function<bool(double)> &admissible,
+    bool                              &bounded)
   {
-    const auto admissible = [&](const double factor) {
-      ++n_solves;
-      return infeasibility(factor, true) <= feasibility_tolerance;
-    };
     // Bracket [lo, hi] with lo admissible and hi not, then bisect.
     double lo = 1., hi = 1.;
     bounded = false;
@@ -320,19 +318,15 @@ namespace mbfem
   template <int dim>
   std::vector<double>
   StaticAdmissibility<dim>::sliding_mechanism(
-    const std::vector<double> &associated) const
+    const std::vector<double> &associated,
+    unsigned int              &freedom) const
   {
-    // The relative velocity of every pair, w = P_hat v, in its frame.
-    const unsigned int  n_modes = coupling.n();
-    std::vector<double> w(candidates.size() * dim, 0.);
-    double              largest = 0.;
-    for (const unsigned int k : active)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          for (unsigned int a = 0; a < n_modes; ++a)
-            w[k * dim + d] += coupling(k * dim + d, a) * associated[a];
-          largest = std::max(largest, std::abs(w[k * dim + d]));
-        }
+    freedom                           = 0;
+    const unsigned int        n_modes = coupling.n();
+    const std::vector<double> w       = pair_velocities(associated);
+    double                    largest = 0.;
+    for (const double x : w)
+      largest = std::max(largest, std::abs(x));
     // Rows that must vanish: every direction of a pair at rest, the
     // normal of a pair that slides (its velocity on the dual cone,
     // w_n = mu |w_t|). Pairs that open (w_n > mu |w_t|) stay free.
@@ -373,6 +367,7 @@ namespace mbfem
                                          eigenvalues,
                                          eigenvectors);
     std::vector<double> sliding = associated;
+    freedom                     = n_modes - eigenvalues.size();
     for (unsigned int i = 0; i < eigenvalues.size(); ++i)
       {
         double projection = 0.;
@@ -390,7 +385,10 @@ namespace mbfem
     // Nothing left (a mechanism that only opens joints), or one the loads
     // do no work along: the associated one is the better description.
     if (size <= 1e-6 || work <= 0.)
-      return associated;
+      {
+        freedom = 0;
+        return associated;
+      }
     for (double &v : sliding)
       v /= size;
     return sliding;
@@ -399,8 +397,175 @@ namespace mbfem
 
 
   template <int dim>
+  std::vector<double>
+  StaticAdmissibility<dim>::pair_velocities(
+    const std::vector<double> &mechanism) const
+  {
+    std::vector<double> w(candidates.size() * dim, 0.);
+    for (const unsigned int k : active)
+      for (unsigned int d = 0; d < dim; ++d)
+        for (unsigned int a = 0; a < coupling.n(); ++a)
+          w[k * dim + d] += coupling(k * dim + d, a) * mechanism[a];
+    return w;
+  }
+
+
+
+  template <int dim>
+  double
+  StaticAdmissibility<dim>::mechanism_infeasibility(
+    const double               factor,
+    const std::vector<double> &mechanism,
+    const unsigned int         freedom) const
+  {
+    const unsigned int        n_modes = coupling.n();
+    const double              inf     = COIN_DBL_MAX;
+    const std::vector<double> w       = pair_velocities(mechanism);
+    double                    largest = 0.;
+    for (const double x : w)
+      largest = std::max(largest, std::abs(x));
+    const double tolerance = 1e-6 * largest;
+    // 3D: unless the kinematics alone fix the mechanism's direction
+    // (@p freedom = 1: a wedge on two planes), it comes from an LP over
+    // polygonal cones and may lie up to half a facet's angle off the true
+    // one (a block on a plane slides normal to the nearest facet), so the
+    // shear may turn by that much from it: the set then still contains the
+    // forces of the true motion.
+    const double fan =
+      (dim == 2 || freedom == 1) ? 0. : std::tan(numbers::PI / n_facets);
+
+    LinearProgram lp;
+    const double  load_norm =
+      add_equilibrium_rows(lp, external_resultant, force_scale);
+    for (const unsigned int k : active)
+      {
+        const Candidate &pair = candidates[k];
+        const double     area = pair.area / force_scale;
+        const double     mu   = pair.joint.friction_coefficient / factor;
+        const double     cohesion =
+          (pair.broken ? 0. : pair.joint.cohesion / factor) * area;
+        const double tension =
+          (pair.broken ? 0. : pair.joint.tensile_strength / factor) * area;
+        double slip = 0.;
+        for (unsigned int d = 1; d < dim; ++d)
+          slip += w[k * dim + d] * w[k * dim + d];
+        slip                  = std::sqrt(slip);
+        const double wn       = w[k * dim];
+        bool         held_any = false;
+        for (unsigned int d = 0; d < dim; ++d)
+          held_any = held_any || pair.held[d];
+
+        // A pair that opens along the mechanism carries nothing.
+        if (!pair.tied && wn > tolerance)
+          continue;
+        const bool slides =
+          !pair.tied && !held_any && slip > tolerance && wn >= -tolerance;
+        if (!slides)
+          {
+            // At rest (or closing, or tied): anything its cone allows, as
+            // in the statics LP with circumscribed cones.
+            unsigned int first = 0;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const bool         free  = pair.tied && !pair.held[d];
+                const double       lower = pair.held[d]      ? 0. :
+                                           (d == 0 && !free) ? -tension :
+                                                               -inf;
+                const double       upper = pair.held[d] ? 0. : inf;
+                const unsigned int c     = lp.add_column(lower, upper, 0.);
+                if (d == 0)
+                  first = c;
+                for (unsigned int a = 0; a < n_modes; ++a)
+                  lp.add(a, c, coupling(k * dim + d, a));
+              }
+            if (!pair.tied)
+              add_cone_facets<dim>(
+                lp, first, n_facets, 1., cohesion + mu * tension, mu);
+            continue;
+          }
+        // Sliding: normal force N, shear tau against the slip s, at most
+        // the strength (c A + mu (N + sigma_t A), circumscribed), and in
+        // 3D a shear tau_perp across s within the fan.
+        Tensor<1, dim> s, across;
+        for (unsigned int d = 1; d < dim; ++d)
+          s[d] = w[k * dim + d] / slip;
+        if (dim == 3)
+          {
+            across[1] = -s[2];
+            across[2] = s[1];
+          }
+        const unsigned int normal = lp.add_column(-tension, inf, 0.);
+        const unsigned int shear  = lp.add_column(0., inf, 0.);
+        for (unsigned int a = 0; a < n_modes; ++a)
+          {
+            lp.add(a, normal, coupling(k * dim, a));
+            double along = 0.;
+            for (unsigned int d = 1; d < dim; ++d)
+              along -= coupling(k * dim + d, a) * s[d];
+            lp.add(a, shear, along);
+          }
+        const unsigned int strength = lp.add_row(-inf, cohesion + mu * tension);
+        lp.add(strength, shear, 1.);
+        lp.add(strength, normal, -mu);
+        if (dim == 3)
+          {
+            const unsigned int turn = lp.add_column(-inf, inf, 0.);
+            for (unsigned int a = 0; a < n_modes; ++a)
+              {
+                double value = 0.;
+                for (unsigned int d = 1; d < dim; ++d)
+                  value += coupling(k * dim + d, a) * across[d];
+                lp.add(a, turn, value);
+              }
+            for (const double sign : {1., -1.})
+              {
+                const unsigned int row = lp.add_row(-inf, 0.);
+                lp.add(row, turn, sign);
+                lp.add(row, shear, -fan);
+              }
+          }
+      }
+    ClpSimplex model;
+    solve_phase_one(lp, model);
+    return std::max(0., model.objectiveValue()) / std::max(load_norm, 1e-300);
+  }
+
+
+
+  template <int dim>
+  void
+  StaticAdmissibility<dim>::add_mechanism_factor(Result &result) const
+  {
+    if (result.verdict == Verdict::none)
+      result.limit_mechanism = result.mechanism;
+    else if (!result.strength_factor_bounded)
+      {
+        // The mechanism just beyond the statics limit.
+        std::vector<double> associated;
+        ++result.n_solves;
+        if (infeasibility(result.strength_factor * 1.0001, true, &associated) >
+            feasibility_tolerance)
+          result.limit_mechanism =
+            sliding_mechanism(associated, result.limit_mechanism_freedom);
+      }
+    if (result.limit_mechanism.empty())
+      return;
+    result.mechanism_factor = search_factor(
+      [&](const double factor) {
+        ++result.n_solves;
+        return mechanism_infeasibility(factor,
+                                       result.limit_mechanism,
+                                       result.limit_mechanism_freedom) <=
+               feasibility_tolerance;
+      },
+      result.mechanism_factor_bounded);
+  }
+
+
+
+  template <int dim>
   typename StaticAdmissibility<dim>::Result
-  StaticAdmissibility<dim>::solve() const
+  StaticAdmissibility<dim>::solve(const bool with_mechanism_factor) const
   {
     const auto start = std::chrono::steady_clock::now();
     Result     result;
@@ -419,7 +584,8 @@ namespace mbfem
       {
         result.verdict              = Verdict::none;
         result.associated_mechanism = mechanism;
-        result.mechanism            = sliding_mechanism(mechanism);
+        result.mechanism =
+          sliding_mechanism(mechanism, result.limit_mechanism_freedom);
       }
     else
       {
@@ -428,8 +594,14 @@ namespace mbfem
         result.verdict = (inner <= feasibility_tolerance ? Verdict::admissible :
                                                            Verdict::undecided);
       }
-    result.strength_factor =
-      search_strength_factor(result.strength_factor_bounded, result.n_solves);
+    result.strength_factor = search_factor(
+      [&](const double factor) {
+        ++result.n_solves;
+        return infeasibility(factor, true) <= feasibility_tolerance;
+      },
+      result.strength_factor_bounded);
+    if (with_mechanism_factor)
+      add_mechanism_factor(result);
     result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();

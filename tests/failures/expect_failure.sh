@@ -2,7 +2,8 @@
 # Runs mbfem on a bad input and checks that it fails as a user should see:
 #   - a non-zero exit code, and the one of a '# expect-exit: N' line if
 #     the input has one (2: no equilibrium, certified by the statics
-#     certificate; 3: the iteration failed although admissible contact
+#     certificate; 4: none along the mechanism of the statics limit
+#     (limit equilibrium); 3: the iteration failed although admissible contact
 #     forces exist; 1: anything else),
 #   - every '# expect: REGEX' line of the input matched by stderr, and
 #     every '# expect-stdout: REGEX' line by stdout,

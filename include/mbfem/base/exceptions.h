@@ -35,10 +35,20 @@ namespace mbfem
     /**
      * An increment failed for good (after any step halvings), although the
      * statics certificate found contact forces within the joints' strength
-     * that balance the floating blocks: the iteration, not the model, is
-     * at fault (exit code 3).
+     * that balance the floating blocks, and so does limit equilibrium along
+     * the mechanism of the statics limit: most likely the iteration, not
+     * the model, is at fault (exit code 3).
      */
     DeclException1(ExcNotConvergedButAdmissible, std::string, << arg1);
+
+    /**
+     * An increment failed for good, statics alone admits forces, but limit
+     * equilibrium along the mechanism of the statics limit (shear against
+     * the slip, as in Hoek and Bray's wedge analysis) does not: the blocks
+     * cannot move that way in equilibrium. A kinematic verdict, weaker than
+     * exit code 2's: another state might hold them (exit code 4).
+     */
+    DeclException1(ExcNoEquilibriumAlongMechanism, std::string, << arg1);
 
     /** A sparse or dense factorisation met a zero pivot. */
     DeclException1(ExcSingularMatrix, std::string, << arg1);
@@ -46,8 +56,9 @@ namespace mbfem
 
   /**
    * The exit code that tells how a run failed: 2 no equilibrium
-   * (certified), 3 the iteration failed although admissible contact
-   * forces exist, 1 anything else.
+   * (certified by statics), 4 none along the mechanism of the statics
+   * limit (limit equilibrium), 3 the iteration failed although both admit
+   * forces, 1 anything else.
    */
   int
   exit_code(const ExceptionBase &e);

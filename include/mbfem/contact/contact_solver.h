@@ -203,7 +203,7 @@ namespace mbfem
      * if none exist, each moving block's translation and rotation.
      */
     typename StaticAdmissibility<dim>::Result
-    certify() const;
+    certify(const bool with_mechanism_factor = true) const;
 
     /**
      * Names of the floating blocks none of whose pairs stuck in the
@@ -355,6 +355,11 @@ namespace mbfem
     std::string
     describe_mechanism(const std::vector<double> &mechanism) const;
 
+    /** The limit equilibrium along the certificate's mechanism, in words. */
+    std::string
+    describe_mechanism_factor(
+      const typename StaticAdmissibility<dim>::Result &result) const;
+
     /** How the fast iteration ended: converged, or why not. */
     struct FastOutcome
     {
@@ -424,6 +429,20 @@ namespace mbfem
      */
     unsigned int
     unload_against(Trial &trial, const Vector<double> &motion) const;
+
+    /**
+     * At a mechanism of the load path that unloading cannot mend: the
+     * blocks move along it, a finite motion at the same load, until the
+     * first open pair closes (a column tipping onto its neighbour across a
+     * gap), which then slips on in the direction it moved (or sticks, if
+     * it did not move tangentially). @p gap is every pair's normal gap at
+     * the present s, updated for the motion. Returns whether a pair
+     * closed.
+     */
+    bool
+    close_along(Trial                &trial,
+                const Vector<double> &motion,
+                std::vector<double>  &gap) const;
 
     /**
      * The load path (source/contact/load_path.cc): the increment's load

@@ -3,9 +3,11 @@
 
 #include <mbfem/interface/joint_law.h>
 
+#include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -103,6 +105,32 @@ namespace mbfem
        * topples about its toe. This is the one the messages name.
        */
       std::vector<double> mechanism;
+      /**
+       * The mechanism of mechanism_factor: @p mechanism if no admissible
+       * forces exist, else the one of the statics limit (the same LP at
+       * 1.0001 x the strength factor); empty if the factor is unbounded.
+       */
+      std::vector<double> limit_mechanism;
+      /**
+       * How many independent motions keep limit_mechanism's sliding pairs
+       * sliding and its pairs at rest at rest: 1 if the kinematics alone
+       * fix its direction (a wedge on two planes), 0 if it is not
+       * projected (the associated one).
+       */
+      unsigned int limit_mechanism_freedom = 0;
+      /**
+       * Limit equilibrium along limit_mechanism, as Hoek
+       * and Bray's wedge or Goodman and Bray's toppling analyses do it: the
+       * largest F such that forces exist with every sliding pair's shear
+       * against its slip and at most (c A + mu N) / F, N >= 0, the pairs
+       * that open carrying nothing, and those at rest anything in their
+       * cone. Motion along the mechanism needs such forces, so below 1
+       * the blocks cannot move this way in equilibrium; F <= the strength
+       * factor always. 0 if there is no mechanism.
+       */
+      double mechanism_factor = 0.;
+      /** The factor reached the search's bound. */
+      bool mechanism_factor_bounded = false;
       /** Admissible forces (per pair and direction), if any exist. */
       std::vector<double> forces;
       unsigned int        n_candidates = 0;
@@ -123,9 +151,12 @@ namespace mbfem
                         const std::vector<double> &external_resultant,
                         const unsigned int         n_facets = 64);
 
-    /** The verdict, the mechanism if none, and the strength factor. */
+    /**
+     * The verdict, the mechanism if none, the strength factor and, if
+     * @p with_mechanism_factor, the mechanism factor.
+     */
     Result
-    solve() const;
+    solve(const bool with_mechanism_factor = true) const;
 
     /**
      * The phase-1 optimum, relative to the sum of |F_e|, with every joint's
@@ -141,14 +172,41 @@ namespace mbfem
     /** A phase-1 optimum below this (relative) is feasible. */
     static constexpr double feasibility_tolerance = 1e-8;
 
-  private:
-    /** The sliding mechanism from the associated one (see Result). */
-    std::vector<double>
-    sliding_mechanism(const std::vector<double> &associated) const;
-
-    /** Largest factor with admissible forces, by bisection. */
+    /**
+     * The phase-1 optimum, relative to the sum of |F_e|, of limit
+     * equilibrium along @p mechanism (Result::mechanism_factor) with every
+     * joint's strength divided by @p strength_factor; @p freedom as
+     * Result::limit_mechanism_freedom (in 3D, unless it is 1, the shear may
+     * turn by pi / n_facets from the slip, the LP's error in direction).
+     */
     double
-    search_strength_factor(bool &bounded, unsigned int &n_solves) const;
+    mechanism_infeasibility(const double               strength_factor,
+                            const std::vector<double> &mechanism,
+                            const unsigned int         freedom) const;
+
+  private:
+    /**
+     * The sliding mechanism from the associated one (see Result), and how
+     * many independent motions it was chosen from (@p freedom).
+     */
+    std::vector<double>
+    sliding_mechanism(const std::vector<double> &associated,
+                      unsigned int              &freedom) const;
+
+    /**
+     * Largest factor at which @p admissible (monotone: true up to the
+     * factor, false beyond) holds, by bisection.
+     */
+    static double
+    search_factor(const std::function<bool(double)> &admissible, bool &bounded);
+
+    /** Result::mechanism (at the statics limit if admissible). */
+    void
+    add_mechanism_factor(Result &result) const;
+
+    /** The relative velocity P_hat v of every pair, in its frame. */
+    std::vector<double>
+    pair_velocities(const std::vector<double> &mechanism) const;
 
     const std::vector<Candidate> candidates;
     const FullMatrix<double>     coupling;
