@@ -460,19 +460,30 @@ namespace mbfem
           throw Exceptions::ExcNoEquilibriumAlongMechanism(verdict.str());
         }
       if (result.verdict == Verdict::admissible)
-        throw Exceptions::ExcNotConvergedButAdmissible(
-          text.str() +
-          (result.mechanism_factor_bounded && result.mechanism_factor < 1. ?
-             "    Statics admits forces with these joint strengths; the "
-             "mechanism of its limit is none the blocks could be held "
-             "along at any strength, so it says nothing here. The state "
-             "iteration found no equilibrium: a failure of the iteration, "
-             "or of the model beyond what statics can prove." :
-             "    Statics and limit equilibrium along the mechanism both "
-             "admit forces with these joint strengths, and the state "
-             "iteration found no equilibrium: most likely a failure of the "
-             "iteration, not of the model (statics cannot prove that the "
-             "elastic model has a solution)."));
+        {
+          std::string why;
+          if (result.limit_mechanism.empty())
+            why = "    Statics admits forces with these joint strengths and "
+                  "gives no mechanism to check limit equilibrium along. The "
+                  "state iteration found no equilibrium: a failure of the "
+                  "iteration, or of the model beyond what statics can "
+                  "prove.";
+          else if (result.mechanism_factor_bounded &&
+                   result.mechanism_factor < 1.)
+            why = "    Statics admits forces with these joint strengths; "
+                  "the mechanism of its limit is none the blocks could be "
+                  "held along even with 1000 times the strength, so it "
+                  "says nothing here. The state iteration found no "
+                  "equilibrium: a failure of the iteration, or of the "
+                  "model beyond what statics can prove.";
+          else
+            why = "    Statics and limit equilibrium along the mechanism "
+                  "both admit forces with these joint strengths, and the "
+                  "state iteration found no equilibrium: most likely a "
+                  "failure of the iteration, not of the model (statics "
+                  "cannot prove that the elastic model has a solution).";
+          throw Exceptions::ExcNotConvergedButAdmissible(text.str() + why);
+        }
       throw Exceptions::ExcIncrementNotConverged(text.str());
     }
   } // namespace

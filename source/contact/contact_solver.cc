@@ -1722,12 +1722,15 @@ namespace mbfem
       text << " along the mechanism of the statics limit"
            << describe_mechanism(result.limit_mechanism) << ",";
     text << " with the shear of every sliding pair against its slip (at "
-            "most c A + mu N), open pairs carrying nothing and those at rest "
-            "anything in their cone: the joints' strength could be divided "
-            "by "
+            "most c A + mu N, N >= 0, with tensile strength sigma_t: at most "
+            "c A + mu (N + sigma_t A)), open pairs carrying nothing and those "
+            "at rest anything in their cone: the joints' strength could be "
+            "divided by "
          << (result.mechanism_factor_bounded ?
-               (result.mechanism_factor > 1. ? std::string("above 1000") :
-                                               std::string("less than 0.001")) :
+               (result.mechanism_factor > 1. ?
+                  std::string("above 1000") :
+                  std::string("not even 0.001 (no strength up to 1000 "
+                              "times the given one holds the loads)")) :
                "up to " + std::to_string(result.mechanism_factor))
          << " (mechanism factor"
          << (dim == 3 && result.limit_mechanism_freedom != 1 ?

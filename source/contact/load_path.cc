@@ -424,6 +424,16 @@ namespace mbfem
                                   const Vector<double> &motion,
                                   std::vector<double>  &gap) const
   {
+    // Only a motion the loads drive: without work, mechanism_motion()
+    // names a free motion of either sign.
+    double work = 0., load = 0.;
+    for (unsigned int a = 0; a < n_alpha_total; ++a)
+      {
+        work += external_resultant[a] * motion(a);
+        load += external_resultant[a] * external_resultant[a];
+      }
+    if (!(work > 1e-8 * std::sqrt(load) * motion.l2_norm()))
+      return false;
     // The relative motion of each open pair along the mechanism, and the
     // amplitude at which it closes its gap.
     unsigned int                first     = numbers::invalid_unsigned_int;
@@ -441,8 +451,11 @@ namespace mbfem
       }
     for (unsigned int k = 0; k < n_pairs; ++k)
       {
+        // Only pairs the motion closes head-on enough that the blocks move
+        // at most 100 times the gap: a grazing closure would be a large
+        // rigid motion, beyond the small displacements of the method.
         if (trial.state[k] != ContactState::open || contact_pairs[k].tied ||
-            held[k][0] || !(w[k][0] < -1e-6 * largest))
+            held[k][0] || !(w[k][0] < -1e-2 * largest))
           continue;
         const double closes = std::max(gap[k], 0.) / -w[k][0];
         if (closes < amplitude)

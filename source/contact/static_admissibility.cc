@@ -319,6 +319,7 @@ namespace mbfem
   std::vector<double>
   StaticAdmissibility<dim>::sliding_mechanism(
     const std::vector<double> &associated,
+    const double               factor,
     unsigned int              &freedom) const
   {
     freedom                           = 0;
@@ -337,8 +338,9 @@ namespace mbfem
         double tangential = 0.;
         for (unsigned int d = 1; d < dim; ++d)
           tangential += w[k * dim + d] * w[k * dim + d];
-        tangential        = std::sqrt(tangential);
-        const double mu   = candidates[k].joint.friction_coefficient;
+        tangential = std::sqrt(tangential);
+        // The friction of the LP the duals came from.
+        const double mu   = candidates[k].joint.friction_coefficient / factor;
         const bool   rest = std::abs(w[k * dim]) + tangential <= tolerance;
         // (In 3D the polygon's dual cone reaches up to 1 / cos(pi / n)
         // beyond the circle's, between two facets.)
@@ -543,13 +545,29 @@ namespace mbfem
         // The mechanism just beyond the statics limit.
         std::vector<double> associated;
         ++result.n_solves;
-        if (infeasibility(result.strength_factor * 1.0001, true, &associated) >
-            feasibility_tolerance)
+        const double factor = result.strength_factor * 1.0001;
+        if (infeasibility(factor, true, &associated) > feasibility_tolerance)
           result.limit_mechanism =
-            sliding_mechanism(associated, result.limit_mechanism_freedom);
+            sliding_mechanism(associated,
+                              factor,
+                              result.limit_mechanism_freedom);
       }
     if (result.limit_mechanism.empty())
       return;
+    // The projection leaves the pairs that open free: if it drives one
+    // into its neighbour, the motion is not one the blocks can make, and
+    // limit equilibrium along it proves nothing.
+    const std::vector<double> w       = pair_velocities(result.limit_mechanism);
+    double                    largest = 0.;
+    for (const double x : w)
+      largest = std::max(largest, std::abs(x));
+    for (const unsigned int k : active)
+      if (!candidates[k].tied && !candidates[k].held[0] &&
+          w[k * dim] < -1e-6 * largest)
+        {
+          result.limit_mechanism.clear();
+          return;
+        }
     result.mechanism_factor = search_factor(
       [&](const double factor) {
         ++result.n_solves;
@@ -585,7 +603,7 @@ namespace mbfem
         result.verdict              = Verdict::none;
         result.associated_mechanism = mechanism;
         result.mechanism =
-          sliding_mechanism(mechanism, result.limit_mechanism_freedom);
+          sliding_mechanism(mechanism, 1., result.limit_mechanism_freedom);
       }
     else
       {

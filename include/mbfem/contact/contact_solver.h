@@ -435,9 +435,10 @@ namespace mbfem
      * blocks move along it, a finite motion at the same load, until the
      * first open pair closes (a column tipping onto its neighbour across a
      * gap), which then slips on in the direction it moved (or sticks, if
-     * it did not move tangentially). @p gap is every pair's normal gap at
-     * the present s, updated for the motion. Returns whether a pair
-     * closed.
+     * it did not move tangentially). Only along a motion the loads do work
+     * on, and only for a pair it closes at a move of at most 100 times the
+     * gap. @p gap is every pair's normal gap at the present s, updated for
+     * the motion. Returns whether a pair closed.
      */
     bool
     close_along(Trial                &trial,

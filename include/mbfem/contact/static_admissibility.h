@@ -108,7 +108,9 @@ namespace mbfem
       /**
        * The mechanism of mechanism_factor: @p mechanism if no admissible
        * forces exist, else the one of the statics limit (the same LP at
-       * 1.0001 x the strength factor); empty if the factor is unbounded.
+       * 1.0001 x the strength factor); empty if the strength factor is
+       * unbounded, or if the mechanism would drive a pair into its
+       * neighbour (the projection leaves opening pairs free).
        */
       std::vector<double> limit_mechanism;
       /**
@@ -119,14 +121,18 @@ namespace mbfem
        */
       unsigned int limit_mechanism_freedom = 0;
       /**
-       * Limit equilibrium along limit_mechanism, as Hoek
-       * and Bray's wedge or Goodman and Bray's toppling analyses do it: the
-       * largest F such that forces exist with every sliding pair's shear
-       * against its slip and at most (c A + mu N) / F, N >= 0, the pairs
-       * that open carrying nothing, and those at rest anything in their
+       * Limit equilibrium along limit_mechanism, as Hoek and Bray's wedge
+       * or Goodman and Bray's toppling analyses do it: the largest F such
+       * that forces exist with every sliding pair's shear against its slip
+       * and at most (c A + mu (N + sigma_t A)) / F, N >= -sigma_t A / F (so
+       * N >= 0 without tensile strength), the pairs that open carrying
+       * nothing, and those at rest anything in their (circumscribed)
        * cone. Motion along the mechanism needs such forces, so below 1
-       * the blocks cannot move this way in equilibrium; F <= the strength
-       * factor always. 0 if there is no mechanism.
+       * the blocks cannot move this way in equilibrium. At most the
+       * strength factor in 2D and where the kinematics fix the direction
+       * (in 3D otherwise the shear may turn by pi / n_facets from the
+       * slip, which can lift it slightly above). 0 if there is no
+       * mechanism.
        */
       double mechanism_factor = 0.;
       /** The factor reached the search's bound. */
@@ -186,11 +192,13 @@ namespace mbfem
 
   private:
     /**
-     * The sliding mechanism from the associated one (see Result), and how
-     * many independent motions it was chosen from (@p freedom).
+     * The sliding mechanism from the associated one (see Result) of the
+     * LP at @p strength_factor, and how many independent motions it was
+     * chosen from (@p freedom).
      */
     std::vector<double>
     sliding_mechanism(const std::vector<double> &associated,
+                      const double               strength_factor,
                       unsigned int              &freedom) const;
 
     /**
