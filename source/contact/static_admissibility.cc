@@ -116,6 +116,38 @@ namespace mbfem
         }
     }
 
+    /**
+     * The force columns (normal, then tangents) of a pair with coupling
+     * rows @p first_row ... + dim - 1, bounded as the pair allows: held
+     * directions carry nothing, the normal of an untied pair at most the
+     * tension @p tension, the rest anything. Returns the normal's column.
+     */
+    template <int dim>
+    unsigned int
+    add_force_columns(LinearProgram               &lp,
+                      const FullMatrix<double>    &coupling,
+                      const unsigned int           first_row,
+                      const bool                   tied,
+                      const std::array<bool, dim> &held,
+                      const double                 tension)
+    {
+      const double inf   = COIN_DBL_MAX;
+      unsigned int first = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const bool         free  = tied && !held[d];
+          const double       lower = held[d]           ? 0. :
+                                     (d == 0 && !free) ? -tension :
+                                                         -inf;
+          const unsigned int c = lp.add_column(lower, held[d] ? 0. : inf, 0.);
+          if (d == 0)
+            first = c;
+          for (unsigned int a = 0; a < coupling.n(); ++a)
+            lp.add(a, c, coupling(first_row + d, a));
+        }
+      return first;
+    }
+
     /** Loads @p lp into @p model and solves it; throws unless optimal. */
     void
     solve_phase_one(const LinearProgram &lp, ClpSimplex &model)
@@ -205,9 +237,7 @@ namespace mbfem
                                           std::vector<double> *mechanism,
                                           std::vector<double> *forces) const
   {
-    const unsigned int n_modes = coupling.n();
-    const double       inf     = COIN_DBL_MAX;
-    LinearProgram      lp;
+    LinearProgram lp;
 
     // Equilibrium rows first (row a = mode a), then the cones.
     const double load_norm =
@@ -228,19 +258,8 @@ namespace mbfem
           (pair.broken ? 0. : pair.joint.cohesion / factor) * area;
         const double tension =
           (pair.broken ? 0. : pair.joint.tensile_strength / factor) * area;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const bool         free  = pair.tied && !pair.held[d];
-            const double       lower = pair.held[d]      ? 0. :
-                                       (d == 0 && !free) ? -tension :
-                                                           -inf;
-            const double       upper = pair.held[d] ? 0. : inf;
-            const unsigned int c     = lp.add_column(lower, upper, 0.);
-            if (d == 0)
-              first_column[i] = c;
-            for (unsigned int a = 0; a < n_modes; ++a)
-              lp.add(a, c, coupling(active[i] * dim + d, a));
-          }
+        first_column[i] = add_force_columns<dim>(
+          lp, coupling, active[i] * dim, pair.tied, pair.held, tension);
         if (pair.tied)
           continue;
         // |r_t| <= c A + mu r_n (+ mu sigma_t A, circumscribed).
@@ -466,20 +485,8 @@ namespace mbfem
           {
             // At rest (or closing, or tied): anything its cone allows, as
             // in the statics LP with circumscribed cones.
-            unsigned int first = 0;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const bool         free  = pair.tied && !pair.held[d];
-                const double       lower = pair.held[d]      ? 0. :
-                                           (d == 0 && !free) ? -tension :
-                                                               -inf;
-                const double       upper = pair.held[d] ? 0. : inf;
-                const unsigned int c     = lp.add_column(lower, upper, 0.);
-                if (d == 0)
-                  first = c;
-                for (unsigned int a = 0; a < n_modes; ++a)
-                  lp.add(a, c, coupling(k * dim + d, a));
-              }
+            const unsigned int first = add_force_columns<dim>(
+              lp, coupling, k * dim, pair.tied, pair.held, tension);
             if (!pair.tied)
               add_cone_facets<dim>(
                 lp, first, n_facets, 1., cohesion + mu * tension, mu);
