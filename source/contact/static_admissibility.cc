@@ -231,6 +231,19 @@ namespace mbfem
 
 
   template <int dim>
+  std::array<double, 3>
+  StaticAdmissibility<dim>::strength_of(const Candidate &pair,
+                                        const double     factor) const
+  {
+    const double area = pair.area / force_scale;
+    return {{pair.joint.friction_coefficient / factor,
+             (pair.broken ? 0. : pair.joint.cohesion / factor) * area,
+             (pair.broken ? 0. : pair.joint.tensile_strength / factor) * area}};
+  }
+
+
+
+  template <int dim>
   double
   StaticAdmissibility<dim>::infeasibility(const double         factor,
                                           const bool           circumscribed,
@@ -251,14 +264,9 @@ namespace mbfem
     std::vector<unsigned int> first_column(active.size());
     for (unsigned int i = 0; i < active.size(); ++i)
       {
-        const Candidate &pair = candidates[active[i]];
-        const double     area = pair.area / force_scale;
-        const double     mu   = pair.joint.friction_coefficient / factor;
-        const double     cohesion =
-          (pair.broken ? 0. : pair.joint.cohesion / factor) * area;
-        const double tension =
-          (pair.broken ? 0. : pair.joint.tensile_strength / factor) * area;
-        first_column[i] = add_force_columns<dim>(
+        const Candidate &pair              = candidates[active[i]];
+        const auto [mu, cohesion, tension] = strength_of(pair, factor);
+        first_column[i]                    = add_force_columns<dim>(
           lp, coupling, active[i] * dim, pair.tied, pair.held, tension);
         if (pair.tied)
           continue;
@@ -460,14 +468,9 @@ namespace mbfem
       add_equilibrium_rows(lp, external_resultant, force_scale);
     for (const unsigned int k : active)
       {
-        const Candidate &pair = candidates[k];
-        const double     area = pair.area / force_scale;
-        const double     mu   = pair.joint.friction_coefficient / factor;
-        const double     cohesion =
-          (pair.broken ? 0. : pair.joint.cohesion / factor) * area;
-        const double tension =
-          (pair.broken ? 0. : pair.joint.tensile_strength / factor) * area;
-        double slip = 0.;
+        const Candidate &pair              = candidates[k];
+        const auto [mu, cohesion, tension] = strength_of(pair, factor);
+        double slip                        = 0.;
         for (unsigned int d = 1; d < dim; ++d)
           slip += w[k * dim + d] * w[k * dim + d];
         slip                  = std::sqrt(slip);

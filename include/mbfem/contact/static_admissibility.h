@@ -212,6 +212,14 @@ namespace mbfem
     void
     add_mechanism_factor(Result &result) const;
 
+    /**
+     * mu / F, and c A / F and sigma_t A / F in the LP's force units (zero
+     * for a broken pair), of @p pair with its strength divided by
+     * @p strength_factor.
+     */
+    std::array<double, 3>
+    strength_of(const Candidate &pair, const double strength_factor) const;
+
     /** The relative velocity P_hat v of every pair, in its frame. */
     std::vector<double>
     pair_velocities(const std::vector<double> &mechanism) const;
