@@ -26,44 +26,15 @@
 #include <cmath>
 #include <cstdio>
 
+#include "rigid_blocks.h"
+
 using namespace dealii;
 using mbfem::JointLaw;
 using mbfem::StaticAdmissibility;
+using rigid_blocks::incline_2d;
 
 namespace
 {
-  /** As in tests/static_admissibility.cc: a b x h block on an incline. */
-  StaticAdmissibility<2>::Result
-  incline_2d(const double   theta,
-             const double   b,
-             const double   h,
-             const JointLaw joint)
-  {
-    const Tensor<1, 2> t({std::cos(theta), std::sin(theta)});
-    const Tensor<1, 2> n({-std::sin(theta), std::cos(theta)});
-    const Tensor<1, 2> centre = 0.5 * b * t + 0.5 * h * n;
-    const double       size   = std::sqrt(b * b + h * h);
-    FullMatrix<double> coupling(4, 3);
-    std::vector<StaticAdmissibility<2>::Candidate> candidates(2);
-    for (unsigned int k = 0; k < 2; ++k)
-      {
-        const Tensor<1, 2> x        = (k == 0 ? 0. : b) * t - centre;
-        const Tensor<1, 2> modes[3] = {Tensor<1, 2>({1., 0.}),
-                                       Tensor<1, 2>({0., 1.}),
-                                       Tensor<1, 2>(
-                                         {-x[1] / size, x[0] / size})};
-        for (unsigned int a = 0; a < 3; ++a)
-          {
-            coupling(2 * k, a)     = n * modes[a];
-            coupling(2 * k + 1, a) = t * modes[a];
-          }
-        candidates[k].joint = joint;
-        candidates[k].area  = 0.5 * b;
-      }
-    const std::vector<double> resultant = {0., -1., 0.};
-    return StaticAdmissibility<2>(candidates, coupling, resultant).solve();
-  }
-
   /**
    * A rigid wedge of unit weight on two planes through a line plunging
    * @p psi towards +y, at an included angle @p xi, symmetric about the
@@ -89,23 +60,10 @@ namespace
         const unsigned int plane = k / 4;
         const Tensor<1, 3> point = (k % 2 == 0 ? -1. : 1.) * along +
                                    (k / 2 % 2 == 0 ? 0.1 : 1.) * rise[plane];
-        const Tensor<1, 3> n  = normal[plane];
-        const Tensor<1, 3> t1 = along;
-        const Tensor<1, 3> t2 = cross_product_3d(n, t1);
-        for (unsigned int a = 0; a < 6; ++a)
-          {
-            Tensor<1, 3> mode, e;
-            if (a < 3)
-              mode[a] = 1.;
-            else
-              {
-                e[a - 3] = 1.;
-                mode     = cross_product_3d(e, point - centre) / size;
-              }
-            coupling(3 * k, a)     = n * mode;
-            coupling(3 * k + 1, a) = t1 * mode;
-            coupling(3 * k + 2, a) = t2 * mode;
-          }
+        const Tensor<1, 3> frame[3] = {normal[plane],
+                                       along,
+                                       cross_product_3d(normal[plane], along)};
+        rigid_blocks::couple_pair_3d(coupling, k, point - centre, size, frame);
         candidates[k].joint = joint;
         candidates[k].area  = 0.25;
       }
@@ -132,7 +90,7 @@ main()
       {
         JointLaw joint;
         joint.friction_coefficient = std::tan(slope * degree) / fraction;
-        const auto r = incline_2d(slope * degree, 2.26, 1.69, joint);
+        const auto r = incline_2d(slope * degree, 2.26, 1.69, joint, 1.);
         std::printf("2D slide, theta = %5.2f deg, at %.2f of the limit: "
                     "mechanism factor %.5f, closed form %.5f, equal to the "
                     "strength factor to 1e-6: %s\n",
@@ -147,7 +105,7 @@ main()
   {
     JointLaw joint;
     joint.friction_coefficient = 2.;
-    const auto r               = incline_2d(20. * degree, 1., 3., joint);
+    const auto r               = incline_2d(20. * degree, 1., 3., joint, 1.);
     std::printf("2D topple, theta = 20 deg: mechanism factor below 0.001 "
                 "(no strength holds a block rotating about its corner): %s\n",
                 yes(r.mechanism_factor_bounded && r.mechanism_factor < 1.));

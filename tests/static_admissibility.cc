@@ -22,9 +22,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "rigid_blocks.h"
+
 using namespace dealii;
 using mbfem::JointLaw;
 using mbfem::StaticAdmissibility;
+using rigid_blocks::incline_2d;
 
 namespace
 {
@@ -44,45 +47,6 @@ namespace
                                                               "undecided";
   }
 
-  /**
-   * 2D: a b x h block (weight W, centre at its middle) on a plane at
-   * theta, pairs at the two base corners; the block is side b, the normal
-   * points into it. Modes: translation x, y, rotation about the centre
-   * (in units of the block's size, as Block::rigid_body_modes()).
-   */
-  StaticAdmissibility<2>::Result
-  incline_2d(const double   theta,
-             const double   b,
-             const double   h,
-             const JointLaw joint,
-             const double   weight)
-  {
-    const Tensor<1, 2> t({std::cos(theta), std::sin(theta)}); // up-dip
-    const Tensor<1, 2> n({-std::sin(theta), std::cos(theta)});
-    const Tensor<1, 2> centre = 0.5 * b * t + 0.5 * h * n;
-    const double       size   = std::sqrt(b * b + h * h);
-    FullMatrix<double> coupling(4, 3);
-    std::vector<StaticAdmissibility<2>::Candidate> candidates(2);
-    for (unsigned int k = 0; k < 2; ++k)
-      {
-        const Tensor<1, 2> x        = (k == 0 ? 0. : b) * t - centre;
-        const Tensor<1, 2> modes[3] = {Tensor<1, 2>({1., 0.}),
-                                       Tensor<1, 2>({0., 1.}),
-                                       Tensor<1, 2>(
-                                         {-x[1] / size, x[0] / size})};
-        for (unsigned int a = 0; a < 3; ++a)
-          {
-            coupling(2 * k, a)     = n * modes[a];
-            coupling(2 * k + 1, a) = t * modes[a];
-          }
-        candidates[k].joint = joint;
-        candidates[k].area  = 0.5 * b;
-      }
-    // F_e = Phi^T f for the weight at the centre: no moment about it.
-    const std::vector<double> resultant = {0., -weight, 0.};
-    return StaticAdmissibility<2>(candidates, coupling, resultant).solve();
-  }
-
   /** 3D: a 1 x 1 x 1 block on a plane dipping theta towards -x. */
   StaticAdmissibility<3>::Result
   incline_3d(const double theta, const JointLaw joint)
@@ -100,21 +64,9 @@ namespace
     std::vector<StaticAdmissibility<3>::Candidate> candidates(4);
     for (unsigned int k = 0; k < 4; ++k)
       {
-        const Tensor<1, 3> x = (k % 2) * t1 + (k / 2) * t2 - centre;
-        for (unsigned int a = 0; a < 6; ++a)
-          {
-            Tensor<1, 3> mode, e;
-            if (a < 3)
-              mode[a] = 1.;
-            else
-              {
-                e[a - 3] = 1.;
-                mode     = cross_product_3d(e, x) / std::sqrt(3.);
-              }
-            coupling(3 * k, a)     = n * mode;
-            coupling(3 * k + 1, a) = s1 * mode;
-            coupling(3 * k + 2, a) = s2 * mode;
-          }
+        const Tensor<1, 3> x        = (k % 2) * t1 + (k / 2) * t2 - centre;
+        const Tensor<1, 3> frame[3] = {n, s1, s2};
+        rigid_blocks::couple_pair_3d(coupling, k, x, std::sqrt(3.), frame);
         candidates[k].joint = joint;
         candidates[k].area  = 0.25;
       }
