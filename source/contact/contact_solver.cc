@@ -1717,7 +1717,7 @@ namespace mbfem
     std::ostringstream text;
     text << std::fixed << std::setprecision(6) << "\n    Limit equilibrium";
     if (result.verdict == StaticAdmissibility<dim>::Verdict::none)
-      text << " along that mechanism";
+      text << " along that mechanism,";
     else
       text << " along the mechanism of the statics limit"
            << describe_mechanism(result.limit_mechanism) << ",";
