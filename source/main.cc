@@ -16,7 +16,9 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
+#include <new>
 #include <string>
 
 namespace
@@ -44,14 +46,17 @@ namespace
   {
     mbfem::Parameters<dim> parameters;
     mbfem::read_parameters(filename, parameters);
+    mbfem::stop_if_signalled(-1); // a signal while starting up
     if (parameters.run.mode == "order study")
-      mbfem::OrderStudy<dim>(parameters, pcout).run();
-    else
       {
-        // Only the load stepping checks for a signal (between increments).
-        mbfem::catch_termination_signals();
-        mbfem::MultiBodyProblem<dim>(parameters, pcout).run();
+        // No increments to finish: a signal ends the study at once.
+        mbfem::release_termination_signals();
+        mbfem::OrderStudy<dim>(parameters, pcout).run();
       }
+    else
+      // The set-up and the load stepping check for a signal between their
+      // steps.
+      mbfem::MultiBodyProblem<dim>(parameters, pcout).run();
   }
 
 
@@ -107,10 +112,15 @@ main(int argc, char *argv[])
   // A log written to a file shows each increment as it finishes, and a run
   // that is killed keeps the lines printed so far.
   std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
+  // Open MPI's start-up resets SIGINT and SIGTERM to their default
+  // action: held back until it is done, a signal then ends the run at its
+  // first check, with mbfem's message.
+  mbfem::hold_termination_signals();
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      ConditionalOStream               pcout(
+      mbfem::catch_termination_signals();
+      ConditionalOStream pcout(
         std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
 
       const std::string first = (argc > 1 ? argv[1] : "");
@@ -142,6 +152,10 @@ main(int argc, char *argv[])
     }
   catch (mbfem::Interrupted &stop)
     {
+      if (stop.last_complete_increment < 0)
+        return report_signal(stop.signal,
+                             "during the set-up, before the first increment; "
+                             "no results were written");
       return report_signal(stop.signal,
                            "after increment " +
                              std::to_string(stop.last_complete_increment) +
@@ -156,6 +170,21 @@ main(int argc, char *argv[])
       std::cerr << "Aborting." << std::endl;
       return mbfem::exit_code(exc); // 2, 3, 4: see base/exceptions.h
     }
+  catch (std::filesystem::filesystem_error &exc)
+    {
+      std::cerr << "\nmbfem: error\nA file operation on <"
+                << exc.path1().string() << "> failed: " << exc.code().message()
+                << ".\nAborting." << std::endl;
+      return 1;
+    }
+  catch (std::bad_alloc &)
+    {
+      std::cerr << "\nmbfem: error\nThe model needs more memory than this "
+                   "machine has (a mesh, a generator argument or a refinement "
+                   "too large for it).\nAborting."
+                << std::endl;
+      return 1;
+    }
   catch (std::exception &exc)
     {
       std::cerr << "\nmbfem: error\n"
@@ -164,7 +193,10 @@ main(int argc, char *argv[])
     }
   catch (...)
     {
-      std::cerr << "\nmbfem: unknown error. Aborting." << std::endl;
+      std::cerr << "\nmbfem: error\nAn exception that mbfem does not know "
+                   "ended the run: a defect of mbfem; please report it with "
+                   "the parameter file.\nAborting."
+                << std::endl;
       return 1;
     }
   return 0;

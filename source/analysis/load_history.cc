@@ -40,6 +40,11 @@ namespace mbfem
       n_increments = prm.get_integer("Number of increments");
       end_time     = prm.get_double("End time");
       max_halvings = prm.get_integer("Maximum step halvings");
+      AssertThrow(end_time > 0.,
+                  ExcMessage("Load history/End time = " + prm.get("End time") +
+                             ": the increments run from t = 0 to the end "
+                             "time, so it must be positive (at 0 every "
+                             "increment would be at t = 0)."));
     }
     prm.leave_subsection();
   }

@@ -125,10 +125,14 @@ namespace mbfem
   void
   MultiBodyProblem<dim>::run()
   {
+    // A signal during the set-up ends the run between its steps.
     make_blocks();
+    stop_if_signalled(-1);
     setup_blocks();
     print_blocks();
+    stop_if_signalled(-1);
     make_contact();
+    stop_if_signalled(-1);
     make_writers();
 
     // With an in-situ stress, increment 0 is the geostatic stage at t = 0:
@@ -275,7 +279,7 @@ namespace mbfem
   void
   MultiBodyProblem<dim>::make_writers()
   {
-    std::filesystem::create_directories(parameters.output.directory);
+    create_output_directory(parameters.output.directory);
     if (!parameters.output.write_vtu)
       return;
     writer = std::make_unique<OutputWriter>(parameters.output);
@@ -311,9 +315,8 @@ namespace mbfem
                     " (t = " + std::to_string(time) +
                     "): the displacement of " + block->name() +
                     " is not finite. A load or prescribed displacement "
-                    "function gives NaN or inf at this time. Results of "
-                    "the earlier increments are in " +
-                    parameters.output.directory + "."));
+                    "function gives NaN or inf at this time. " +
+                    earlier_results()));
 
     print_increment(k, time, iterations);
     if (parameters.plasticity.enabled)
@@ -339,7 +342,20 @@ namespace mbfem
         if (pair_writer)
           pair_writer->add_step(time, {pair_file});
       }
+    last_written_increment = k;
     stop_if_signalled(k); // SIGINT/SIGTERM: end here, files complete
+  }
+
+
+
+  template <int dim>
+  std::string
+  MultiBodyProblem<dim>::earlier_results() const
+  {
+    if (last_written_increment < 0)
+      return "No increment had converged, so no results were written.";
+    return "Results of the earlier increments are in " +
+           parameters.output.directory + ".";
   }
 
 
@@ -564,9 +580,7 @@ namespace mbfem
                  std::to_string(1u << halvings) +
                  " of its size ('Load history/Maximum step halvings = " +
                  std::to_string(history.max_halvings) + "').\n") +
-            (k > 1 ? "    Results of the earlier increments are in " +
-                       parameters.output.directory + ".\n" :
-                     ""),
+            "    " + earlier_results() + "\n",
           target,
           std::is_same_v<std::decay_t<decltype(failure)>,
                          Exceptions::ExcNoEquilibrium>);
@@ -646,8 +660,8 @@ namespace mbfem
          << " slipping or open, but at t = " << time << " "
          << result.description
          << "\n    The converged state is no equilibrium the joints can "
-            "hold. Results of the earlier increments are in "
-         << parameters.output.directory << ".";
+            "hold. "
+         << earlier_results();
     throw Exceptions::ExcNoEquilibrium(text.str());
   }
 
@@ -762,9 +776,8 @@ namespace mbfem
                   std::to_string(plastic_iterations) +
                   " iterations ('Plasticity/Maximum iterations'). The rock may "
                   "be failing (no equilibrium with this strength), or the "
-                  "increment is too large: use more load increments. Results "
-                  "of the earlier increments are in " +
-                  parameters.output.directory + "."));
+                  "increment is too large: use more load increments. " +
+                  earlier_results()));
   }
 
 
@@ -1224,12 +1237,28 @@ namespace mbfem
         if (e.stress_relative > 0.)
           s_norm2 += std::pow(e.stress / e.stress_relative, 2);
       }
+    AssertThrow(std::isfinite(u_error2 + u_norm2 + s_error2 + s_norm2),
+                ExcMessage("The L2 error against 'Exact solution' at t = " +
+                           std::to_string(time) +
+                           " is not finite: the exact displacement or stress "
+                           "is not finite somewhere in the blocks, or so "
+                           "large that its square overflows. Check its "
+                           "functions; the results of the increments are on "
+                           "disk."));
+    // An exact field that is zero throughout has no relative error: the
+    // absolute one is shown, and said to be so.
+    const auto error_text = [](const double error2, const double norm2) {
+      std::ostringstream text;
+      text << std::scientific << std::setprecision(3)
+           << std::sqrt(error2 / (norm2 > 0. ? norm2 : 1.))
+           << (norm2 > 0. ? "" : " (absolute: the exact field is zero)");
+      return text.str();
+    };
     const double u_relative = std::sqrt(u_error2 / std::max(u_norm2, 1e-300));
     const double s_relative = std::sqrt(s_error2 / std::max(s_norm2, 1e-300));
     pcout << "  L2 errors against the exact solution (relative): "
-          << "displacement " << std::scientific << std::setprecision(3)
-          << u_relative << ", stress " << s_relative << std::defaultfloat
-          << std::setprecision(6) << "\n";
+          << "displacement " << error_text(u_error2, u_norm2) << ", stress "
+          << error_text(s_error2, s_norm2) << "\n";
 
     // numdiff takes numbers within 1e-6 of each other as equal, which
     // would let any change of a small error pass: compare logarithms.

@@ -1,6 +1,7 @@
 #include <mbfem/analysis/block_measures.h>
 #include <mbfem/analysis/order_study.h>
 #include <mbfem/base/parameters.h>
+#include <mbfem/base/text_input.h>
 
 #include <deal.II/base/timer.h>
 
@@ -53,16 +54,28 @@ namespace mbfem
     {
       degrees.clear();
       refinements.clear();
-      for (const int p : Utilities::string_to_int(
-             Utilities::split_string_list(prm.get("Polynomial degrees"))))
+      for (const unsigned int p :
+           parse_id_list(prm.get("Polynomial degrees"),
+                         "Order study/Polynomial degrees"))
         degrees.push_back(p);
-      for (const int r : Utilities::string_to_int(
-             Utilities::split_string_list(prm.get("Refinement levels"))))
+      for (const unsigned int r :
+           parse_id_list(prm.get("Refinement levels"),
+                         "Order study/Refinement levels"))
         refinements.push_back(r);
       table_file      = prm.get("Table file");
       round_off_floor = prm.get_double("Round-off floor");
     }
     prm.leave_subsection();
+    AssertThrow(!table_file.empty() &&
+                  table_file.find('/') == std::string::npos &&
+                  table_file != "." && table_file != "..",
+                ExcMessage("Order study/Table file = '" + table_file +
+                           "': name a file (written in Output/Directory), "
+                           "e.g. 'order_study.csv'."));
+    AssertThrow(!degrees.empty() && !refinements.empty(),
+                ExcMessage("Order study: 'Polynomial degrees' and 'Refinement "
+                           "levels' each need at least one value; the study "
+                           "would have no rows."));
     for (unsigned int i = 1; i < refinements.size(); ++i)
       AssertThrow(refinements[i] > refinements[i - 1],
                   ExcMessage("Order study/Refinement levels must increase."));
@@ -116,6 +129,19 @@ namespace mbfem
       compute_errors(block,
                      *parameters.exact_solution.displacement,
                      *parameters.exact_solution.stress);
+    // The study does not run the simulation's checks of the functions: a
+    // load of y^0.5 (NaN below y = 0) filled the table with -nan.
+    AssertThrow(std::isfinite(block.get_solution().l2_norm()) &&
+                  std::isfinite(errors.displacement) &&
+                  std::isfinite(errors.stress),
+                ExcMessage("Order study, p = " + std::to_string(degree) +
+                           ", refinement level " + std::to_string(refinement) +
+                           ": the displacement or its L2 error against "
+                           "'Exact solution' is not finite. A load, "
+                           "prescribed displacement or exact-solution "
+                           "function is not finite on the mesh (or so large "
+                           "that its square overflows); check the "
+                           "functions."));
 
     const double nan = std::numeric_limits<double>::quiet_NaN();
     return {degree,
@@ -225,7 +251,7 @@ namespace mbfem
                       format("%.4f", row.stress_rate).c_str());
         csv << line;
       }
-    std::filesystem::create_directories(parameters.output.directory);
+    create_output_directory(parameters.output.directory);
     const std::string path =
       parameters.output.directory + "/" + parameters.order_study.table_file;
     write_file_atomically(path, csv.str());

@@ -1,5 +1,6 @@
 #include <mbfem/base/exceptions.h>
 
+#include <iostream>
 #include <sstream>
 
 namespace mbfem
@@ -26,5 +27,18 @@ namespace mbfem
     const std::string text  = message.str();
     const auto        first = text.find_first_not_of(" \n");
     return first == std::string::npos ? std::string() : text.substr(first);
+  }
+
+
+
+  QuietCerr::QuietCerr()
+    : original(std::cerr.rdbuf(held.rdbuf()))
+  {}
+
+
+
+  QuietCerr::~QuietCerr()
+  {
+    std::cerr.rdbuf(original);
   }
 } // namespace mbfem

@@ -13,43 +13,78 @@
 #include <cstdlib>
 #include <functional>
 #include <limits>
+#include <regex>
 #include <set>
 #include <sstream>
 
 namespace mbfem
 {
-  double
-  parse_finite_number(const std::string &text, const std::string &where)
+  namespace
   {
-    const std::string trimmed = Utilities::trim(text);
-    char             *end     = nullptr;
-    errno                     = 0;
-    const double value        = std::strtod(trimmed.c_str(), &end);
-    AssertThrow(!trimmed.empty() && end == trimmed.c_str() + trimmed.size() &&
-                  errno != ERANGE && std::isfinite(value),
-                ExcMessage(where + ": '" + trimmed +
-                           "' is not a finite number (write one number, "
-                           "without operators or trailing text)."));
-    return value;
+    /** A name muparser takes for a variable or constant. */
+    bool
+    is_name(const std::string &name)
+    {
+      static const std::regex pattern("[A-Za-z_][A-Za-z0-9_]*");
+      return std::regex_match(name, pattern);
+    }
+  } // namespace
+
+
+
+  void
+  check_variable_names(const std::string &variables,
+                       const unsigned int dim,
+                       const std::string &where)
+  {
+    const std::string entry = "'" + where + "/Variable names'";
+    const auto        names = split_list(variables, ',', entry);
+    AssertThrow(names.size() == dim || names.size() == dim + 1,
+                ExcMessage(
+                  entry + " = '" + variables + "': a " + std::to_string(dim) +
+                  "D function needs " + std::to_string(dim) +
+                  " names of coordinates and optionally one of "
+                  "time, separated by ',' (e.g. '" +
+                  std::string(dim == 2 ? "x,y,t" : "x,y,z,t") + "')."));
+    for (unsigned int i = 0; i < names.size(); ++i)
+      {
+        AssertThrow(is_name(names[i]),
+                    ExcMessage(entry + " = '" + variables + "': '" + names[i] +
+                               "' is not a name (a letter or '_', then "
+                               "letters, digits or '_')."));
+        AssertThrow(std::find(names.begin(), names.begin() + i, names[i]) ==
+                      names.begin() + i,
+                    ExcMessage(entry + " = '" + variables + "': '" + names[i] +
+                               "' is named twice."));
+      }
   }
 
 
 
   void
   check_function_constants(const std::string &constants,
+                           const std::string &variables,
                            const std::string &where)
   {
-    for (const auto &entry : Utilities::split_string_list(constants, ','))
+    const std::string entry   = "'" + where + "/Function constants'";
+    const auto variable_names = Utilities::split_string_list(variables, ',');
+    for (const auto &constant : split_list(constants, ',', entry))
       {
-        const auto parts = Utilities::split_string_list(entry, '=');
+        const auto parts = Utilities::split_string_list(constant, '=');
         AssertThrow(parts.size() == 2,
-                    ExcMessage("'" + where +
-                               "/Function constants': cannot "
-                               "read '" +
-                               entry + "'; write 'name=value'."));
-        parse_finite_number(parts[1],
-                            "'" + where + "/Function constants', constant '" +
-                              parts[0] + "'");
+                    ExcMessage(entry + ": cannot read '" + constant +
+                               "'; write 'name=value'."));
+        AssertThrow(is_name(parts[0]),
+                    ExcMessage(entry + ": in '" + constant + "', '" + parts[0] +
+                               "' is not a name (a letter or '_', then "
+                               "letters, digits or '_')."));
+        AssertThrow(
+          std::find(variable_names.begin(), variable_names.end(), parts[0]) ==
+            variable_names.end(),
+          ExcMessage(entry + ": '" + parts[0] +
+                     "' is one of the function's variables ('" + variables +
+                     "'); give the constant another name."));
+        parse_finite_number(parts[1], entry + ", constant '" + parts[0] + "'");
       }
   }
 
@@ -350,8 +385,7 @@ namespace mbfem
         DoFTools::map_dofs_to_support_points(blocks[b]->get_mapping(),
                                              dof_handler,
                                              points[b]);
-        tolerance[b] =
-          1e-6 * GridTools::diameter(blocks[b]->get_triangulation());
+        tolerance[b] = 1e-6 * diameter(blocks[b]->get_triangulation());
       }
 
     for (const auto &[point, mask] : bc.point_supports)

@@ -28,6 +28,32 @@ namespace mbfem
     action.sa_flags = SA_RESETHAND;
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
+    sigset_t signals;
+    sigemptyset(&signals);
+    sigaddset(&signals, SIGINT);
+    sigaddset(&signals, SIGTERM);
+    sigprocmask(SIG_UNBLOCK, &signals, nullptr);
+  }
+
+
+
+  void
+  hold_termination_signals()
+  {
+    sigset_t signals;
+    sigemptyset(&signals);
+    sigaddset(&signals, SIGINT);
+    sigaddset(&signals, SIGTERM);
+    sigprocmask(SIG_BLOCK, &signals, nullptr);
+  }
+
+
+
+  void
+  release_termination_signals()
+  {
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
   }
 
 
@@ -41,7 +67,7 @@ namespace mbfem
 
 
   void
-  stop_if_signalled(const unsigned int last_complete_increment)
+  stop_if_signalled(const int last_complete_increment)
   {
     // The screen line of the increment reaches a log file now, not when
     // a buffer fills.

@@ -274,7 +274,29 @@ namespace mbfem
         {
           if (extension == ".json")
             check_json_depth(filename);
-          prm.parse_input(filename, "", skip_undefined);
+          try
+            {
+              prm.parse_input(filename, "", skip_undefined);
+            }
+          catch (ExceptionBase &e)
+            {
+              // deal.II's text names Boost and "<unspecified file>(21)":
+              // keep the line and the reason only.
+              const std::string text = message_of(e);
+              const std::regex  boost(
+                "[\\s\\S]*<unspecified file>\\(([0-9]+)\\): "
+                 "([^\\n]*)[\\s\\S]*");
+              std::smatch match;
+              if (!std::regex_match(text, match, boost))
+                throw;
+              AssertThrow(false,
+                          ExcMessage(
+                            "The " +
+                            (extension == ".json" ? std::string("JSON") :
+                                                    std::string("XML")) +
+                            " file <" + filename + "> is not valid: line " +
+                            match[1].str() + ": " + match[2].str()));
+            }
           return;
         }
       std::vector<std::filesystem::path> open = {

@@ -2,6 +2,7 @@
 #include <mbfem/block/block.h>
 #include <mbfem/block/flexibility.h>
 #include <mbfem/block/floating_modes.h>
+#include <mbfem/mesh/mesh.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -209,7 +210,7 @@ namespace mbfem
     if (!boundary_conditions.point_supports.empty())
       {
         const std::vector<Point<dim>> points = support_points();
-        const double tolerance = 1e-6 * GridTools::diameter(triangulation);
+        const double tolerance               = 1e-6 * diameter(triangulation);
         std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
         for (const auto &[point, mask] : boundary_conditions.point_supports)
           for (const auto &cell : dof_handler.active_cell_iterators())

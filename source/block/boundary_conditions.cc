@@ -1,3 +1,4 @@
+#include <mbfem/base/exceptions.h>
 #include <mbfem/base/input_checks.h>
 #include <mbfem/block/boundary_conditions.h>
 
@@ -108,18 +109,17 @@ namespace mbfem
             rigid_platens[id] = c;
 
       point_supports.clear();
+      const std::string where = "Boundary conditions/Point supports";
       for (const auto &entry :
-           Utilities::split_string_list(prm.get("Point supports"), ';'))
+           split_list(prm.get("Point supports"), ';', where))
         {
           const std::vector<std::string> parts =
             Utilities::split_string_list(entry, ':');
-          const std::string where = "Boundary conditions/Point supports";
           AssertThrow(parts.size() == 2,
                       ExcMessage("'" + where + "': cannot read '" + entry +
                                  "'; write 'x,y: components'."));
           std::vector<double> x;
-          for (const auto &coordinate :
-               Utilities::split_string_list(parts[0], ','))
+          for (const auto &coordinate : split_list(parts[0], ',', where))
             x.push_back(parse_finite_number(coordinate, where));
           AssertThrow(x.size() == dim,
                       ExcMessage("'" + where + "': '" + parts[0] +
@@ -129,12 +129,18 @@ namespace mbfem
           for (unsigned int d = 0; d < dim; ++d)
             point[d] = x[d];
           const auto masks = parse_component_map<dim>("0: " + parts[1], where);
+          for (const auto &[other, other_mask] : point_supports)
+            AssertThrow(other.distance(point) > 0.,
+                        ExcMessage("'" + where + "': the point " + parts[0] +
+                                   " is supported twice; give each point "
+                                   "once, with all its components."));
           point_supports.emplace_back(point, masks.begin()->second);
         }
 
       traction_boundaries.clear();
-      for (const int id : Utilities::string_to_int(
-             Utilities::split_string_list(prm.get("Traction boundary ids"))))
+      for (const unsigned int id :
+           parse_id_list(prm.get("Traction boundary ids"),
+                         "Boundary conditions/Traction boundary ids"))
         traction_boundaries.insert(static_cast<types::boundary_id>(id));
 
       prm.enter_subsection("Prescribed displacement");
@@ -200,9 +206,13 @@ namespace mbfem
   {
     auto function =
       std::make_shared<Functions::ParsedFunction<dim>>(n_components);
-    check_function_constants(prm.get("Function constants"), where);
+    check_variable_names(prm.get("Variable names"), dim, where);
+    check_function_constants(prm.get("Function constants"),
+                             prm.get("Variable names"),
+                             where);
     try
       {
+        const QuietCerr quiet;
         function->parse_parameters(prm);
         // muparser compiles an expression when it is first evaluated; do
         // that now, so that a typo is reported here and not in the middle
@@ -219,7 +229,21 @@ namespace mbfem
                       "The function in subsection '" + where +
                       "' cannot be parsed (it needs " +
                       std::to_string(n_components) +
-                      " expressions separated by ';'): " + message.str()));
+                      " expressions separated by ';', in the variables of "
+                      "'Variable names' and the names of 'Function "
+                      "constants'): " +
+                      Utilities::trim(message.str())));
+      }
+    catch (...)
+      {
+        // muparser's own exceptions are no std::exception.
+        AssertThrow(false,
+                    ExcMessage("The function in subsection '" + where +
+                               "' cannot be parsed (it needs " +
+                               std::to_string(n_components) +
+                               " expressions separated by ';', in the "
+                               "variables of 'Variable names' and the "
+                               "names of 'Function constants')."));
       }
     return function;
   }
@@ -233,7 +257,7 @@ namespace mbfem
     static const std::string letters = "xyz";
 
     std::map<types::boundary_id, ComponentMask> result;
-    for (const auto &entry : Utilities::split_string_list(text, ','))
+    for (const auto &entry : split_list(text, ',', where))
       {
         const std::vector<std::string> parts =
           Utilities::split_string_list(entry, ':');

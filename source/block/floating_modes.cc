@@ -1,4 +1,5 @@
 #include <mbfem/block/floating_modes.h>
+#include <mbfem/mesh/mesh.h>
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_tools.h>
@@ -128,7 +129,7 @@ namespace mbfem
     Point<dim> centre;
     for (const auto &p : points)
       centre += p / static_cast<double>(points.size());
-    const double size = GridTools::diameter(dof_handler.get_triangulation());
+    const double size = diameter(dof_handler.get_triangulation());
 
     const unsigned int          n_modes = (dim == 2 ? 3 : 6);
     std::vector<Vector<double>> modes(n_modes, Vector<double>(points.size()));

@@ -1,3 +1,4 @@
+#include <mbfem/base/text_input.h>
 #include <mbfem/block/boundary_conditions.h>
 #include <mbfem/interface/contact_interface.h>
 #include <mbfem/interface/cross_points.h>
@@ -94,7 +95,13 @@ namespace mbfem
         "not settle in as many (or cycles, or meets a singular trial), the "
         "load path concludes the increment (condensed formulation; "
         "doc/state_iteration.md); with the monolithic formulation the run "
-        "stops with a message.");
+        "stops with a message. The methods that follow have limits of their "
+        "own, which this one does not bound: the load path at most 20 "
+        "switches per pair plus 100 (each switch changes one pair's state "
+        "at the load where its condition is reached, so stopping early "
+        "would leave the increment unsolved rather than solved worse), the "
+        "semismooth Newton method 200 iterations. The screen line and the "
+        "summary CSV count each method's iterations apart.");
       prm.declare_entry(
         "Formulation",
         "condensed",
@@ -174,8 +181,9 @@ namespace mbfem
                   const unsigned int n,
                   const std::string &entry)
     {
-      std::vector<double> values =
-        Utilities::string_to_double(Utilities::split_string_list(text));
+      std::vector<double> values;
+      for (const auto &value : split_list(text, ',', "Contact/" + entry))
+        values.push_back(parse_finite_number(value, "'Contact/" + entry + "'"));
       if (values.size() == 1)
         values.resize(n, values[0]);
       AssertThrow(values.size() == n,
@@ -197,7 +205,7 @@ namespace mbfem
     {
       interfaces.clear();
       all_shared_faces = false;
-      for (const auto &entry : Utilities::split_string_list(text, ';'))
+      for (const auto &entry : split_list(text, ';', "Contact/Interfaces"))
         {
           if (entry == "all")
             {
@@ -784,7 +792,7 @@ namespace mbfem
 
     double size = 0.;
     for (const auto &block : blocks)
-      size = std::max(size, GridTools::diameter(block->get_triangulation()));
+      size = std::max(size, diameter(block->get_triangulation()));
     const double coincident = 1e-8 * size;
 
     std::vector<ContactPair<dim>> pairs;

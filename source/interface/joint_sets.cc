@@ -1,3 +1,4 @@
+#include <mbfem/base/text_input.h>
 #include <mbfem/interface/joint_sets.h>
 
 #include <deal.II/base/exceptions.h>
@@ -90,7 +91,7 @@ namespace mbfem
   parse_joint_sets(const std::string &text, const JointLaw &defaults)
   {
     std::vector<JointSet> sets;
-    for (const auto &entry : Utilities::split_string_list(text, ';'))
+    for (const auto &entry : split_list(text, ';', "Contact/Joint sets"))
       {
         const auto colon = entry.find(':');
         AssertThrow(colon != std::string::npos && colon > 0,
@@ -101,7 +102,7 @@ namespace mbfem
         set.name  = Utilities::trim(entry.substr(0, colon));
         set.joint = defaults;
         for (const auto &item :
-             Utilities::split_string_list(entry.substr(colon + 1), ','))
+             split_list(entry.substr(colon + 1), ',', "Contact/Joint sets"))
           read_item(item, entry, set);
         sets.push_back(set);
       }

@@ -1,3 +1,4 @@
+#include <mbfem/base/text_input.h>
 #include <mbfem/material/in_situ_stress.h>
 #include <mbfem/mesh/mesh.h>
 
@@ -8,18 +9,6 @@
 
 namespace mbfem
 {
-  namespace
-  {
-    /** "3, 5" -> {3, 5}; the entry's pattern has checked the text. */
-    std::vector<int>
-    parse_ids(const std::string &text)
-    {
-      return Utilities::string_to_int(Utilities::split_string_list(text));
-    }
-  } // namespace
-
-
-
   void
   InSituStress::declare_parameters(ParameterHandler &prm)
   {
@@ -82,7 +71,8 @@ namespace mbfem
       unit_weight         = prm.get_double("Unit weight");
       lateral_coefficient = prm.get_double("Lateral pressure coefficient");
       stress_boundaries.clear();
-      for (const auto id : parse_ids(prm.get("Stress boundary ids")))
+      for (const auto id : parse_id_list(prm.get("Stress boundary ids"),
+                                         "In-situ stress/Stress boundary ids"))
         stress_boundaries.insert(id);
     }
     prm.leave_subsection();
@@ -154,12 +144,14 @@ namespace mbfem
     {
       excavated_ids.clear();
       released_boundaries.clear();
-      for (const auto id : parse_ids(prm.get("Excavated material ids")))
+      for (const auto id : parse_id_list(prm.get("Excavated material ids"),
+                                         "Excavation/Excavated material ids"))
         {
           excavated_ids.push_back(id);
           released_boundaries.insert(interface_boundary_id(id));
         }
-      for (const auto id : parse_ids(prm.get("Released boundary ids")))
+      for (const auto id : parse_id_list(prm.get("Released boundary ids"),
+                                         "Excavation/Released boundary ids"))
         released_boundaries.insert(id);
     }
     prm.leave_subsection();

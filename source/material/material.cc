@@ -1,3 +1,4 @@
+#include <mbfem/base/text_input.h>
 #include <mbfem/material/material.h>
 
 #include <deal.II/base/utilities.h>
@@ -76,7 +77,7 @@ namespace mbfem
     prm.enter_subsection("Material");
     const std::string text = prm.get("Block materials");
     prm.leave_subsection();
-    for (const auto &entry : Utilities::split_string_list(text, ';'))
+    for (const auto &entry : split_list(text, ';', "Material/Block materials"))
       {
         const auto parts = Utilities::split_string_list(entry, ':');
         AssertThrow(parts.size() == 2,
@@ -122,6 +123,16 @@ namespace mbfem
     AssertThrow(youngs_modulus > 0.,
                 ExcMessage(where + ": Young's modulus must be positive, got " +
                            std::to_string(youngs_modulus) + "."));
+    // In any consistent units the stiffest solid (diamond, 1.2e12 Pa) lies
+    // below 1e15: a larger value is a slip (a missing unit prefix or a
+    // string of digits), not a material.
+    std::ostringstream value;
+    value << youngs_modulus;
+    AssertThrow(youngs_modulus <= 1e15,
+                ExcMessage(where + ": Young's modulus " + value.str() +
+                           " is stiffer than any solid (diamond: 1.2e12 Pa); "
+                           "mbfem takes E up to 1e15. Check the value and "
+                           "its units."));
     AssertThrow(poissons_ratio > -1. && poissons_ratio < 0.5,
                 ExcMessage(
                   where + ": Poisson's ratio must lie in (-1, 0.5), got " +

@@ -1,6 +1,9 @@
 #include <mbfem/base/exceptions.h>
+#include <mbfem/base/text_input.h>
+#include <mbfem/mesh/gmsh_check.h>
 #include <mbfem/mesh/mesh.h>
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
@@ -11,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <sstream>
 
@@ -95,16 +99,21 @@ namespace mbfem
       initial_refinement  = prm.get_integer("Initial global refinement");
       block_id_function   = prm.get("Block id function");
       circular_boundaries.clear();
+      const std::string where = "Mesh/Circular boundaries";
       for (const auto &entry :
-           Utilities::split_string_list(prm.get("Circular boundaries"), ';'))
+           split_list(prm.get("Circular boundaries"), ';', where))
         {
           const auto parts = Utilities::split_string_list(entry, ':');
           AssertThrow(parts.size() == 2,
-                      ExcMessage("Mesh/Circular boundaries: cannot read '" +
-                                 entry + "'; write 'id: x,y(,z)'."));
-          circular_boundaries[Utilities::string_to_int(parts[0])] =
-            Utilities::string_to_double(
-              Utilities::split_string_list(parts[1], ','));
+                      ExcMessage(where + ": cannot read '" + entry +
+                                 "'; write 'id: x,y(,z)'."));
+          const unsigned int id = parse_id_list(parts[0], where).at(0);
+          AssertThrow(circular_boundaries.count(id) == 0,
+                      ExcMessage(where + ": boundary id " + parts[0] +
+                                 " is given twice."));
+          for (const auto &x : split_list(parts[1], ',', where))
+            circular_boundaries[id].push_back(
+              parse_finite_number(x, where + ", id " + parts[0]));
         }
     }
     prm.leave_subsection();
@@ -153,8 +162,12 @@ namespace mbfem
         }
     }
 
-    /** More cells than a direct solver on one process can handle. */
-    constexpr double max_cells = 1e7;
+    /**
+     * More cells than a direct solver on one process can handle on a
+     * machine of 24 GB: a 1000 x 1000 block of FE_Q(1) (2e6 DoFs) peaked at
+     * 6.6 GB with KLU; 3000 x 3000 cells ran out of memory.
+     */
+    constexpr double max_cells = 2e6;
 
     /**
      * The counts of cells of subdivided_hyper_rectangle/cube: deal.II
@@ -163,7 +176,9 @@ namespace mbfem
      */
     template <int dim>
     void
-    check_subdivisions(const std::string &name, const std::string &arguments)
+    check_subdivisions(const std::string &name,
+                       const std::string &arguments,
+                       const unsigned int refinement)
     {
       const auto fields = Utilities::split_string_list(arguments, ':');
       if (name.rfind("subdivided_hyper_", 0) != 0 || fields.empty() ||
@@ -187,9 +202,18 @@ namespace mbfem
                                  std::to_string(int(max_cells)) + "."));
           n_cells *= (is_cube ? std::pow(n, dim) : n);
         }
+      // Checked before the mesh is made: 9e6 coarse cells alone took 38 s
+      // and 3.2 GB before the refinement was refused.
+      n_cells *= std::pow(2., dim * refinement);
+      std::ostringstream count;
+      count << n_cells;
       AssertThrow(n_cells <= max_cells,
-                  ExcMessage(where + "that makes " + std::to_string(n_cells) +
-                             " cells, more than mbfem can solve (" +
+                  ExcMessage(where + "that makes " + count.str() + " cells" +
+                             (refinement > 0 ?
+                                " after 'Initial global refinement' = " +
+                                  std::to_string(refinement) :
+                                std::string()) +
+                             ", more than mbfem can solve (" +
                              std::to_string(int(max_cells)) + ")."));
     }
 
@@ -204,7 +228,8 @@ namespace mbfem
         "' did not make a " + std::to_string(dim) + "D mesh: ";
       check_generator_numbers(parameters.generator_arguments);
       check_subdivisions<dim>(parameters.generator_name,
-                              parameters.generator_arguments);
+                              parameters.generator_arguments,
+                              parameters.initial_refinement);
       // Only the message of deal.II's exception: what() would add the
       // source location and a stack trace of deal.II's internals.
       try
@@ -249,20 +274,22 @@ namespace mbfem
                                .string() +
                              "> (a relative path is taken from the folder "
                              "of the parameter file that sets it)."));
-      GridIn<dim> grid_in(triangulation);
+      check_gmsh_file(parameters.mesh_file, dim);
+      GridIn<dim>       grid_in(triangulation);
+      const std::string what = "Could not read the gmsh file <" +
+                               parameters.mesh_file + "> as a " +
+                               std::to_string(dim) + "D mesh: ";
       try
         {
           grid_in.read_msh(in);
         }
       catch (ExceptionBase &e)
         {
-          std::ostringstream message;
-          e.print_info(message);
-          AssertThrow(false,
-                      ExcMessage("Could not read the gmsh file <" +
-                                 parameters.mesh_file + "> as a " +
-                                 std::to_string(dim) +
-                                 "D mesh: " + message.str()));
+          AssertThrow(false, ExcMessage(what + Utilities::trim(message_of(e))));
+        }
+      catch (std::exception &e)
+        {
+          AssertThrow(false, ExcMessage(what + e.what()));
         }
     }
 
@@ -282,6 +309,7 @@ namespace mbfem
           FunctionParser<dim> block_id;
           try
             {
+              const QuietCerr quiet;
               block_id.initialize(FunctionParser<dim>::default_variable_names(),
                                   parameters.block_id_function,
                                   {});
@@ -314,6 +342,50 @@ namespace mbfem
 
 
 
+    /**
+     * The vertices of the faces with boundary id @p id lie on one circle
+     * (sphere) about @p centre: a centre that is not the arc's, or an id
+     * of a straight boundary, would make the manifold move the refined
+     * and curved nodes to another geometry than the mesh's.
+     */
+    template <int dim>
+    void
+    check_on_circle(const Triangulation<dim> &triangulation,
+                    const types::boundary_id  id,
+                    const Point<dim>         &centre)
+    {
+      std::vector<Point<dim>> vertices;
+      for (const auto &face : triangulation.active_face_iterators())
+        if (face->at_boundary() && face->boundary_id() == id)
+          for (const unsigned int v : face->vertex_indices())
+            vertices.push_back(face->vertex(v));
+      double r_min = std::numeric_limits<double>::infinity(), r_max = 0.;
+      for (const auto &vertex : vertices)
+        {
+          r_min = std::min(r_min, vertex.distance(centre));
+          r_max = std::max(r_max, vertex.distance(centre));
+        }
+      const BoundingBox<dim> box(vertices);
+      // gmsh places the nodes of an arc on it to round-off; 1e-6 of the
+      // radius leaves room for a mesh written with 10 digits.
+      std::ostringstream text;
+      text << "Mesh/Circular boundaries: the faces with boundary id " << id
+           << " do not lie on a " << (dim == 2 ? "circle" : "sphere")
+           << " about (" << centre << "): their vertices are " << r_min
+           << " to " << r_max
+           << " from it. Give the centre of the arc, and only ids of "
+              "curved boundaries.";
+      // A centre a million arc lengths away (1e308) makes every distance
+      // equal in round-off: no circle the faces could follow.
+      const double extent = box.side_length(0) + box.side_length(1) +
+                            (dim == 3 ? box.side_length(dim - 1) : 0.);
+      AssertThrow(r_max - r_min <= 1e-6 * r_max && r_min > 0. &&
+                    r_max <= 1e6 * extent,
+                  ExcMessage(text.str()));
+    }
+
+
+
     /** A SphericalManifold on each face set of 'Mesh/Circular boundaries'. */
     template <int dim>
     void
@@ -342,6 +414,7 @@ namespace mbfem
                       ExcMessage("Mesh/Circular boundaries: the mesh has no "
                                  "face with boundary id " +
                                  std::to_string(id) + "."));
+          check_on_circle(triangulation, id, c);
           triangulation.set_manifold(manifold, SphericalManifold<dim>(c));
           ++manifold;
         }
@@ -560,6 +633,29 @@ namespace mbfem
 
 
 
+  template <int dim>
+  double
+  diameter(const Triangulation<dim> &triangulation)
+  {
+    std::vector<bool> on_boundary(triangulation.n_vertices(), false);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          for (const unsigned int v : face->vertex_indices())
+            on_boundary[face->vertex_index(v)] = true;
+    std::vector<Point<dim>> points;
+    for (unsigned int v = 0; v < on_boundary.size(); ++v)
+      if (on_boundary[v])
+        points.push_back(triangulation.get_vertices()[v]);
+    double largest = 0.;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int j = i + 1; j < points.size(); ++j)
+        largest = std::max(largest, points[i].distance_square(points[j]));
+    return std::sqrt(largest);
+  }
+
+
+
   template void
   create_mesh(const MeshParameters &, Triangulation<2> &);
   template void
@@ -580,4 +676,8 @@ namespace mbfem
   boundary_ids_of(const Triangulation<2> &);
   template std::set<types::boundary_id>
   boundary_ids_of(const Triangulation<3> &);
+  template double
+  diameter(const Triangulation<2> &);
+  template double
+  diameter(const Triangulation<3> &);
 } // namespace mbfem

@@ -227,22 +227,40 @@ namespace mbfem
     void
     print_traction_errors(TractionErrors errors, ConditionalOStream &pcout)
     {
+      // An exact traction that is not finite at a pair, or whose square
+      // overflows (1e308), has no error to print; the increments are on
+      // disk, and the run ends with the reason.
+      for (const double e :
+           {errors.p_error2, errors.q_error2, errors.p_norm2, errors.q_norm2})
+        AssertThrow(std::isfinite(e),
+                    ExcMessage("The L2 error against 'Contact/Exact "
+                               "traction' is not finite: the exact traction "
+                               "is not finite at some pair, or so large that "
+                               "its square overflows. Check its functions; "
+                               "the results of the increments are on disk."));
       // Where the exact q is zero (a geostatic joint), q is measured
       // against the size of p instead.
       if (errors.q_norm2 == 0.)
         errors.q_norm2 = errors.p_norm2;
+      // Where the exact traction is zero throughout, no error is relative
+      // to it: the absolute one is shown, and said to be so.
       const auto relative = [](const double error2, const double norm2) {
-        return std::sqrt(error2 / std::max(norm2, 1e-300));
+        std::ostringstream text;
+        if (norm2 > 0.)
+          text << std::fixed << std::setprecision(4)
+               << std::sqrt(error2 / norm2);
+        else
+          text << std::scientific << std::setprecision(3) << std::sqrt(error2)
+               << " (absolute: the exact traction is zero)";
+        return text.str();
       };
       pcout << "    relative L2 error against Contact/Exact traction: p "
-            << std::fixed << std::setprecision(4)
             << relative(errors.p_error2, errors.p_norm2) << ", q "
             << relative(errors.q_error2, errors.q_norm2)
             << " (at the pairs); p "
             << relative(errors.p_error2_average, errors.p_norm2) << ", q "
             << relative(errors.q_error2_average, errors.q_norm2)
-            << " (averaged over each pair's area)" << std::defaultfloat
-            << std::setprecision(6) << "\n";
+            << " (averaged over each pair's area)\n";
     }
   } // namespace
 

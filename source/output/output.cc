@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace mbfem
@@ -49,6 +50,54 @@ namespace mbfem
     AssertThrow(!base_name.empty() && base_name.find('/') == std::string::npos,
                 ExcMessage("Output/Base name must be a plain file stem, got '" +
                            base_name + "'."));
+    check_directory(directory);
+  }
+
+
+
+  void
+  OutputParameters::check_directory(const std::string &directory)
+  {
+    // A path of thousands of characters is shown by its start and length.
+    const std::string shown =
+      (directory.size() <= 80 ?
+         directory :
+         directory.substr(0, 60) + "... (" + std::to_string(directory.size()) +
+           " characters)");
+    const std::string where = "Output/Directory = '" + shown + "'";
+    AssertThrow(!Utilities::trim(directory).empty(),
+                ExcMessage("Output/Directory is empty: name a folder for the "
+                           "results, e.g. 'results'."));
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path  path = fs::weakly_canonical(fs::absolute(directory), ec);
+    AssertThrow(!ec,
+                ExcMessage(where + " is not a usable path: " + ec.message() +
+                           "."));
+    // mbfem runs as root on CI and fresh machines: its CSVs must not land
+    // among the system's files.
+    const auto        first = std::next(path.begin()); // below the root
+    const std::string top   = (first == path.end() ? "" : first->string());
+    AssertThrow(path != path.root_path(),
+                ExcMessage(where + " is the root folder; write the results "
+                                   "to a folder of their own, e.g. "
+                                   "'results'."));
+    static const std::set<std::string> system_folders = {"bin",
+                                                         "boot",
+                                                         "dev",
+                                                         "etc",
+                                                         "lib",
+                                                         "lib32",
+                                                         "lib64",
+                                                         "proc",
+                                                         "run",
+                                                         "sbin",
+                                                         "sys",
+                                                         "usr"};
+    AssertThrow(system_folders.count(top) == 0,
+                ExcMessage(where + " lies in the system folder /" + top +
+                           "; write the results to a folder of their own, "
+                           "e.g. 'results'."));
   }
 
 
@@ -213,7 +262,7 @@ namespace mbfem
   OutputWriter::OutputWriter(const OutputParameters &parameters)
     : parameters(parameters)
   {
-    std::filesystem::create_directories(parameters.directory);
+    create_output_directory(parameters.directory);
   }
 
 
@@ -318,17 +367,49 @@ namespace mbfem
   write_file_atomically(const std::string &path, const std::string &content)
   {
     const std::string temporary = path + ".part";
+    std::string       failure;
     {
       std::ofstream out(temporary, std::ios::binary);
-      AssertThrow(out.good(),
-                  ExcMessage("Cannot write the output file <" + temporary +
-                             ">."));
-      out << content;
-      out.close();
-      AssertThrow(!out.fail(),
-                  ExcMessage("Writing <" + temporary + "> failed."));
+      if (!out.good())
+        failure = "cannot be created";
+      else
+        {
+          out << content;
+          out.close();
+          if (out.fail())
+            failure = "could not be written whole (is the disk full?)";
+        }
     }
-    std::filesystem::rename(temporary, path);
+    std::error_code ec;
+    if (failure.empty())
+      {
+        std::filesystem::rename(temporary, path, ec);
+        if (ec)
+          failure = "could not be renamed to <" + path + ">: " + ec.message();
+      }
+    if (!failure.empty())
+      {
+        std::filesystem::remove(temporary, ec);
+        AssertThrow(false,
+                    ExcMessage("The output file <" + temporary + "> " +
+                               failure +
+                               ". The files written before it are "
+                               "complete."));
+      }
+  }
+
+
+
+  void
+  create_output_directory(const std::string &directory)
+  {
+    std::error_code ec;
+    std::filesystem::create_directories(directory, ec);
+    AssertThrow(
+      !ec && std::filesystem::is_directory(directory, ec),
+      ExcMessage(
+        "Cannot create the folder 'Output/Directory' = '" + directory + "': " +
+        (ec ? ec.message() : std::string("a file of that name exists")) + "."));
   }
 
 

@@ -5,8 +5,9 @@
 #     certificate; 4: none along the mechanism of the statics limit
 #     (limit equilibrium); 3: the iteration failed although admissible contact
 #     forces exist; 1: anything else),
-#   - every '# expect: REGEX' line of the input matched by stderr, and
-#     every '# expect-stdout: REGEX' line by stdout,
+#   - every '# expect: REGEX' line of the input matched by stderr, no
+#     '# expect-not: REGEX' line matched by it, and every
+#     '# expect-stdout: REGEX' line matched by stdout,
 #   - no deal.II exception dump (source location, stack trace) in stderr,
 #   - every '# expect-file: PATH' present afterwards (results of increments
 #     that converged stay on disk),
@@ -16,6 +17,8 @@
 # for inputs that cannot hold these comments (JSON).
 # '# signal-on: REGEX SIGNAL' sends SIGNAL to mbfem once its stdout matches
 # REGEX (which also shows that the screen output is not held in a buffer).
+# '# setup: COMMAND' runs COMMAND (bash) in the working folder first, e.g. to
+# put /dev/full where mbfem will write (a full disk without a mount).
 # Usage: expect_failure.sh MBFEM INPUT.prm WORKDIR
 set -u
 mbfem=$1
@@ -27,6 +30,8 @@ alternative=$(sed -n 's/^# input: //p' "$input")
 [ -n "$alternative" ] && run_input=$(dirname "$input")/$alternative
 
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+setup=$(sed -n 's/^# setup: //p' "$input")
+[ -n "$setup" ] && { bash -c "$setup" || exit 1; }
 signal_on=$(sed -n 's/^# signal-on: //p' "$input")
 if [ -n "$signal_on" ]; then
   pattern=${signal_on% *}
@@ -69,6 +74,12 @@ if [ $n_expect -eq 0 ]; then
   echo "FAIL: $input has no '# expect:' line"
   failed=1
 fi
+while IFS= read -r pattern; do
+  if grep -E -q -- "$pattern" stderr; then
+    echo "FAIL: the error output matches what it must not: $pattern"
+    failed=1
+  fi
+done < <(sed -n 's/^# expect-not: //p' "$input")
 while IFS= read -r pattern; do
   if ! grep -E -q -- "$pattern" stdout; then
     echo "FAIL: the screen output does not match: $pattern"

@@ -239,6 +239,13 @@ namespace mbfem
     static double
     max_slip(const ContactSolver<dim> &solver);
 
+    /**
+     * What a failure message says of the files on disk: where the results
+     * of the increments that converged are, or that none was written.
+     */
+    std::string
+    earlier_results() const;
+
     Parameters<dim>                         &parameters;
     ConditionalOStream                      &pcout;
     TimerOutput                              timer;
@@ -273,6 +280,8 @@ namespace mbfem
     double                last_contact_seconds   = 0.;
     double                last_reference_seconds = 0.;
     std::string           summary_csv;
+    /** The last increment whose results are on disk (none yet: -1). */
+    int last_written_increment = -1;
   };
 } // namespace mbfem
 

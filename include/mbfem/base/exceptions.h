@@ -3,6 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <sstream>
 #include <string>
 
 namespace mbfem
@@ -66,6 +67,22 @@ namespace mbfem
   /** The text of a deal.II exception, without its leading blank lines. */
   std::string
   message_of(const ExceptionBase &e);
+
+  /**
+   * Holds back what is written to std::cerr while it lives. deal.II's
+   * FunctionParser prints muparser's error dump there before it throws; the
+   * error reaches the user once, in mbfem's own message.
+   */
+  class QuietCerr
+  {
+  public:
+    QuietCerr();
+    ~QuietCerr();
+
+  private:
+    std::ostringstream held;
+    std::streambuf    *original;
+  };
 } // namespace mbfem
 
 #endif

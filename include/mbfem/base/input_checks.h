@@ -2,6 +2,7 @@
 #define mbfem_base_input_checks_h
 
 #include <mbfem/base/parameters.h>
+#include <mbfem/base/text_input.h>
 #include <mbfem/block/block.h>
 
 #include <deal.II/base/function.h>
@@ -29,20 +30,27 @@ namespace mbfem
   /** @{ */
 
   /**
-   * @p text as one finite number, or an error naming @p where: a value such
-   * as '2/3' or '1 2' would otherwise be read as its first number.
-   */
-  double
-  parse_finite_number(const std::string &text, const std::string &where);
-
-  /**
    * The 'Function constants' entry of a ParsedFunction ('P=1, D=2'):
-   * every value must be one finite number. deal.II reads the first number
-   * of the text ('2/3' becomes 2) and accepts inf and nan.
+   * every name must be a name muparser accepts and not one of the
+   * function's variables, every value one finite number. deal.II reads
+   * the first number of the text ('2/3' becomes 2) and accepts inf and
+   * nan; muparser rejects a bad name with an exception that is no
+   * std::exception ('unknown error').
    */
   void
   check_function_constants(const std::string &constants,
+                           const std::string &variables,
                            const std::string &where);
+
+  /**
+   * The 'Variable names' entry of a ParsedFunction in @p dim dimensions:
+   * @p dim names of coordinates and optionally one of time, each a name
+   * muparser accepts, none twice.
+   */
+  void
+  check_variable_names(const std::string &variables,
+                       const unsigned int dim,
+                       const std::string &where);
 
   /**
    * Every function of the input (loads, prescribed displacements, body

@@ -13,6 +13,23 @@ namespace mbfem
   void
   catch_termination_signals();
 
+  /**
+   * Holds SIGINT and SIGTERM back (blocks them) until
+   * catch_termination_signals(): Open MPI's start-up sets them to their
+   * default action, so a signal then killed mbfem in the middle of it (and
+   * Open MPI's daemon reported a broken pipe). A signal held back is
+   * delivered to mbfem's handler once it is installed.
+   */
+  void
+  hold_termination_signals();
+
+  /**
+   * Gives SIGINT and SIGTERM their default action again (the run ends at
+   * once), for work that has no increments to finish (the order study).
+   */
+  void
+  release_termination_signals();
+
   /** The signal received since catch_termination_signals(), or 0. */
   int
   received_signal();
@@ -20,16 +37,19 @@ namespace mbfem
   /** Thrown by stop_if_signalled(); caught by main(). */
   struct Interrupted
   {
-    int          signal;
-    unsigned int last_complete_increment;
+    int signal;
+    /** -1: stopped during the set-up, before any increment was written. */
+    int last_complete_increment;
   };
 
   /**
    * Throws Interrupted if a signal arrived. Call it when increment
-   * @p last_complete_increment is solved and all its files are written.
+   * @p last_complete_increment is solved and all its files are written, or
+   * with -1 between the steps of the set-up (mesh, blocks, flexibilities),
+   * so that a signal during a long set-up ends the run there.
    */
   void
-  stop_if_signalled(const unsigned int last_complete_increment);
+  stop_if_signalled(const int last_complete_increment);
 } // namespace mbfem
 
 #endif

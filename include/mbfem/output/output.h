@@ -27,6 +27,13 @@ namespace mbfem
     void
     parse_parameters(ParameterHandler &prm);
 
+    /**
+     * Refuses an empty 'Output/Directory', the file system's root and the
+     * system folders (/etc, /usr, /proc, ...) before anything is written.
+     */
+    static void
+    check_directory(const std::string &directory);
+
     std::string directory = "results";
     std::string base_name = "solution";
     bool        write_vtu = true;
@@ -127,9 +134,20 @@ namespace mbfem
     std::vector<std::pair<double, std::vector<std::string>>> steps;
   };
 
-  /** Writes @p content to @p path via a temporary file and a rename. */
+  /**
+   * Writes @p content to @p path via a temporary file and a rename; on any
+   * failure (a full disk, a folder that went away) the temporary file is
+   * removed and the message names the file and the reason.
+   */
   void
   write_file_atomically(const std::string &path, const std::string &content);
+
+  /**
+   * Creates 'Output/Directory' (@p directory) if missing, or an error that
+   * names it and the reason (not a folder, no permission, a path too long).
+   */
+  void
+  create_output_directory(const std::string &directory);
 } // namespace mbfem
 
 #endif

@@ -1,0 +1,46 @@
+#ifndef mbfem_base_text_input_h
+#define mbfem_base_text_input_h
+
+#include <string>
+#include <vector>
+
+/**
+ * @file Reading numbers and lists from the text of a parameter, strictly:
+ * deal.II's own conversions read the first number of '2/3', accept inf and
+ * nan, and drop a trailing delimiter. Every error names the parameter
+ * (@p where) and the text.
+ */
+
+namespace mbfem
+{
+  /**
+   * @p text as one finite number, or an error naming @p where: a value such
+   * as '2/3' or '1 2' would otherwise be read as its first number.
+   */
+  double
+  parse_finite_number(const std::string &text, const std::string &where);
+
+  /**
+   * The entries of the list @p text separated by @p delimiter, trimmed.
+   * An empty entry ('0.5,', '1,,2', ', 1') is refused naming @p where:
+   * deal.II's split_string_list drops a trailing delimiter, so '0.5,' for
+   * two interfaces would silently become one value for both.
+   */
+  std::vector<std::string>
+  split_list(const std::string &text,
+             const char         delimiter,
+             const std::string &where);
+
+  /**
+   * The whole numbers of the list @p text (',' between them), each from 0
+   * to @p max (by default below deal.II's reserved ids), none twice: a
+   * boundary id named twice ('1, 1') is a slip of the keyboard that would
+   * otherwise pass.
+   */
+  std::vector<unsigned int>
+  parse_id_list(const std::string &text,
+                const std::string &where,
+                const unsigned int max = 4294967294u);
+} // namespace mbfem
+
+#endif

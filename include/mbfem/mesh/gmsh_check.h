@@ -1,0 +1,31 @@
+#ifndef mbfem_mesh_gmsh_check_h
+#define mbfem_mesh_gmsh_check_h
+
+#include <string>
+
+/**
+ * @file The structure of a gmsh file, checked before deal.II's GridIn reads
+ * it. GridIn trusts the file: a file cut off inside a quoted name loops
+ * forever, a count larger than the file reads on for as long as the count
+ * says, /dev/zero fills the memory, a cell of zero area ends in an internal
+ * assertion, and cells dropped from the file or left out of every physical
+ * group still run as another model. Every refusal names the file and the
+ * line.
+ */
+
+namespace mbfem
+{
+  /**
+   * Reads @p path once, line by line with a bounded line length, and checks
+   * it as a gmsh ASCII mesh of version 2.2 or 4.1 for a @p dim-dimensional
+   * model: a regular file of at most 4 GiB; sections opened and closed in
+   * order; counts that match the lines that follow; quoted physical names;
+   * every node an element names present and every node used by an element;
+   * every cell of dimension @p dim in a physical group if any is; no cell
+   * of zero area (volume).
+   */
+  void
+  check_gmsh_file(const std::string &path, const unsigned int dim);
+} // namespace mbfem
+
+#endif
