@@ -14,6 +14,17 @@ namespace mbfem
     {
       signal_received = signal;
     }
+
+    /** Blocks (SIG_BLOCK) or unblocks (SIG_UNBLOCK) SIGINT and SIGTERM. */
+    void
+    mask_termination_signals(const int how)
+    {
+      sigset_t signals;
+      sigemptyset(&signals);
+      sigaddset(&signals, SIGINT);
+      sigaddset(&signals, SIGTERM);
+      sigprocmask(how, &signals, nullptr);
+    }
   } // namespace
 
 
@@ -28,11 +39,7 @@ namespace mbfem
     action.sa_flags = SA_RESETHAND;
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
-    sigset_t signals;
-    sigemptyset(&signals);
-    sigaddset(&signals, SIGINT);
-    sigaddset(&signals, SIGTERM);
-    sigprocmask(SIG_UNBLOCK, &signals, nullptr);
+    mask_termination_signals(SIG_UNBLOCK); // one held back arrives now
   }
 
 
@@ -40,11 +47,7 @@ namespace mbfem
   void
   hold_termination_signals()
   {
-    sigset_t signals;
-    sigemptyset(&signals);
-    sigaddset(&signals, SIGINT);
-    sigaddset(&signals, SIGTERM);
-    sigprocmask(SIG_BLOCK, &signals, nullptr);
+    mask_termination_signals(SIG_BLOCK);
   }
 
 
