@@ -70,10 +70,7 @@ namespace
               << (signal == SIGINT  ? "SIGINT" :
                   signal == SIGTERM ? "SIGTERM" :
                                       strsignal(signal))
-              << " " << where
-              << "; the files on disk are complete (the PVD index lists "
-                 "the increments written)."
-              << std::endl;
+              << " " << where << "." << std::endl;
     return 128 + signal;
   }
 
@@ -148,7 +145,8 @@ main(int argc, char *argv[])
       if (mbfem::received_signal() != 0)
         return report_signal(mbfem::received_signal(),
                              "after the last increment (its summary may be "
-                             "incomplete)");
+                             "incomplete); the files on disk are complete (the "
+                             "PVD index lists the increments written)");
     }
   catch (mbfem::Interrupted &stop)
     {
@@ -159,7 +157,9 @@ main(int argc, char *argv[])
       return report_signal(stop.signal,
                            "after increment " +
                              std::to_string(stop.last_complete_increment) +
-                             ", the last complete one");
+                             ", the last complete one; the files on disk are "
+                             "complete (the PVD index lists the increments "
+                             "written)");
     }
   catch (ExceptionBase &exc)
     {

@@ -123,16 +123,16 @@ namespace mbfem
     AssertThrow(youngs_modulus > 0.,
                 ExcMessage(where + ": Young's modulus must be positive, got " +
                            std::to_string(youngs_modulus) + "."));
-    // In any consistent units the stiffest solid (diamond, 1.2e12 Pa) lies
-    // below 1e15: a larger value is a slip (a missing unit prefix or a
-    // string of digits), not a material.
+    // In SI units (Pa) the stiffest solid (diamond) has 1.2e12, and kPa or
+    // MPa give smaller numbers: a larger value is a slip (a string of digits,
+    // a unit off by a factor of 1000), not a material.
     std::ostringstream value;
     value << youngs_modulus;
     AssertThrow(youngs_modulus <= 1e15,
                 ExcMessage(where + ": Young's modulus " + value.str() +
-                           " is stiffer than any solid (diamond: 1.2e12 Pa); "
-                           "mbfem takes E up to 1e15. Check the value and "
-                           "its units."));
+                           " is stiffer than any solid in SI units (diamond: "
+                           "1.2e12 Pa); mbfem takes E up to 1e15. Check the "
+                           "value and its units."));
     AssertThrow(poissons_ratio > -1. && poissons_ratio < 0.5,
                 ExcMessage(
                   where + ": Poisson's ratio must lie in (-1, 0.5), got " +

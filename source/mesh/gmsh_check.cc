@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -22,7 +23,7 @@ namespace mbfem
     /** Longer lines are no gmsh ASCII mesh (and /dev/zero has no end). */
     constexpr std::size_t max_line_length = 1 << 16;
 
-    /** A file that large is no mesh mbfem can solve (1e7 cells). */
+    /** A file that large is no mesh mbfem can solve (2e6 cells). */
     constexpr std::uintmax_t max_file_size = std::uintmax_t(2) << 30;
 
     struct Line
@@ -197,7 +198,10 @@ namespace mbfem
                       "the line is longer than " +
                         std::to_string(max_line_length) +
                         " characters: this is no gmsh ASCII mesh file.");
-          const std::string text(buffer.data());
+          // A file saved on Windows ends its lines with "\r\n".
+          std::string text(buffer.data());
+          if (!text.empty() && text.back() == '\r')
+            text.pop_back();
           if (in.eof() && text.empty())
             break;
           if (!text.empty() && text[0] == '$')
@@ -316,12 +320,13 @@ namespace mbfem
     void
     add_element(GmshFile                       &file,
                 const Line                     &line,
-                const int                       type,
+                const long                      type,
                 const bool                      in_physical_group,
                 const std::vector<std::string> &fields,
                 const std::size_t               first_node)
     {
-      const auto t = element_types.find(type);
+      const auto t = element_types.find(static_cast<int>(
+        std::max(std::min(type, long(INT_MAX)), long(INT_MIN))));
       if (t == element_types.end())
         file.fail(line.number,
                   "element type " + std::to_string(type) +
@@ -331,7 +336,7 @@ namespace mbfem
         file.fail(line.number,
                   "an element of type " + std::to_string(type) + " needs " +
                     std::to_string(t->second.first) + " nodes.");
-      Element element{line.number, type, in_physical_group, {}};
+      Element element{line.number, t->first, in_physical_group, {}};
       for (std::size_t i = first_node; i < fields.size(); ++i)
         element.nodes.push_back(whole_number(file, line, fields[i]));
       file.elements.push_back(element);
@@ -362,7 +367,7 @@ namespace mbfem
             n_tags > 0 && whole_number(file, line, fields[3]) > 0;
           add_element(file,
                       line,
-                      int(whole_number(file, line, fields[1])),
+                      whole_number(file, line, fields[1]),
                       physical,
                       fields,
                       3 + n_tags);
@@ -427,7 +432,7 @@ namespace mbfem
               const Line &line = line_at(file, "Elements", i);
               add_element(file,
                           line,
-                          int(head[2]),
+                          head[2],
                           physical[{head[0], head[1]}],
                           fields_of(line.text),
                           1);
@@ -481,7 +486,9 @@ namespace mbfem
 
     /** The elements against the nodes, the groups and the geometry. */
     void
-    check_elements(const GmshFile &file, const unsigned int dim)
+    check_elements(const GmshFile    &file,
+                   const unsigned int dim,
+                   const bool         groups_give_blocks)
     {
       std::map<long, bool> used;
       const Element       *cell_outside_groups = nullptr;
@@ -522,7 +529,8 @@ namespace mbfem
                   "the file has no " + std::to_string(dim) +
                     "D cells: is 'Dimension' right, and were the " +
                     (dim == 2 ? "surfaces" : "volumes") + " meshed?");
-      if (some_in_groups && cell_outside_groups != nullptr)
+      if (groups_give_blocks && some_in_groups &&
+          cell_outside_groups != nullptr)
         file.fail(cell_outside_groups->line,
                   "the cell belongs to no physical group while others do; it "
                   "would become block 0. Put every " +
@@ -540,7 +548,9 @@ namespace mbfem
 
 
   void
-  check_gmsh_file(const std::string &path, const unsigned int dim)
+  check_gmsh_file(const std::string &path,
+                  const unsigned int dim,
+                  const bool         groups_give_blocks)
   {
     GmshFile file;
     file.path = path;
@@ -551,6 +561,6 @@ namespace mbfem
       read_version_2(file);
     else
       read_version_4(file);
-    check_elements(file, dim);
+    check_elements(file, dim, groups_give_blocks);
   }
 } // namespace mbfem

@@ -107,7 +107,12 @@ namespace mbfem
           AssertThrow(parts.size() == 2,
                       ExcMessage(where + ": cannot read '" + entry +
                                  "'; write 'id: x,y(,z)'."));
-          const unsigned int id = parse_id_list(parts[0], where).at(0);
+          const auto ids = parse_id_list(parts[0], where);
+          AssertThrow(ids.size() == 1,
+                      ExcMessage(where + ": '" + entry +
+                                 "' needs one boundary id before ':' (give "
+                                 "each id its own entry, separated by ';')."));
+          const unsigned int id = ids[0];
           AssertThrow(circular_boundaries.count(id) == 0,
                       ExcMessage(where + ": boundary id " + parts[0] +
                                  " is given twice."));
@@ -274,7 +279,9 @@ namespace mbfem
                                .string() +
                              "> (a relative path is taken from the folder "
                              "of the parameter file that sets it)."));
-      check_gmsh_file(parameters.mesh_file, dim);
+      check_gmsh_file(parameters.mesh_file,
+                      dim,
+                      parameters.block_id_function.empty());
       GridIn<dim>       grid_in(triangulation);
       const std::string what = "Could not read the gmsh file <" +
                                parameters.mesh_file + "> as a " +

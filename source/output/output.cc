@@ -82,6 +82,7 @@ namespace mbfem
                 ExcMessage(where + " is the root folder; write the results "
                                    "to a folder of their own, e.g. "
                                    "'results'."));
+    // /run and /dev/shm hold users' media and scratch space: allowed.
     static const std::set<std::string> system_folders = {"bin",
                                                          "boot",
                                                          "dev",
@@ -90,11 +91,11 @@ namespace mbfem
                                                          "lib32",
                                                          "lib64",
                                                          "proc",
-                                                         "run",
                                                          "sbin",
                                                          "sys",
                                                          "usr"};
-    AssertThrow(system_folders.count(top) == 0,
+    const bool scratch = path.string().rfind("/dev/shm/", 0) == 0;
+    AssertThrow(system_folders.count(top) == 0 || scratch,
                 ExcMessage(where + " lies in the system folder /" + top +
                            "; write the results to a folder of their own, "
                            "e.g. 'results'."));

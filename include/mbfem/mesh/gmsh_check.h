@@ -21,11 +21,14 @@ namespace mbfem
    * model: a regular file of at most 4 GiB; sections opened and closed in
    * order; counts that match the lines that follow; quoted physical names;
    * every node an element names present and every node used by an element;
-   * every cell of dimension @p dim in a physical group if any is; no cell
-   * of zero area (volume).
+   * every cell of dimension @p dim in a physical group if any is (only if
+   * @p groups_give_blocks: a 'Block id function' numbers the blocks
+   * instead); no cell of zero area (volume).
    */
   void
-  check_gmsh_file(const std::string &path, const unsigned int dim);
+  check_gmsh_file(const std::string &path,
+                  const unsigned int dim,
+                  const bool         groups_give_blocks);
 } // namespace mbfem
 
 #endif
