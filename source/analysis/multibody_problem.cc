@@ -16,6 +16,8 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
+#include <set>
 #include <sstream>
 #include <utility>
 
@@ -126,6 +128,7 @@ namespace mbfem
   MultiBodyProblem<dim>::run()
   {
     // A signal during the set-up ends the run between its steps.
+    Timer setup_clock;
     make_blocks();
     stop_if_signalled(-1);
     setup_blocks();
@@ -134,7 +137,19 @@ namespace mbfem
     make_contact();
     stop_if_signalled(-1);
     make_writers();
+    if (parameters.run.mode == "strength reduction")
+      run_strength_reduction(setup_clock.wall_time());
+    else
+      run_load_history();
+    print_run_summary();
+  }
 
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::run_load_history()
+  {
     // With an in-situ stress, increment 0 is the geostatic stage at t = 0:
     // nothing released yet, zero displacement, the interfaces in the
     // compression of sigma_0.
@@ -144,8 +159,133 @@ namespace mbfem
          k <= parameters.load_history.n_increments;
          ++k)
       do_increment(k);
+  }
 
-    print_run_summary();
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::run_strength_reduction(const double setup_seconds)
+  {
+    const auto       &srm = parameters.strength_reduction;
+    StrengthReduction search(srm, pcout.get_stream(), parameters.run.test_mode);
+    const double      factor = search.search(
+      [&](const double f) { return run_trial(f, search.trials().empty()); });
+
+    pcout << "The load history at F = " << factor
+          << ", the last factor that converged:\n";
+    Timer final_clock;
+    contact->restart(factor, srm.reduce_tensile_strength);
+    if (reference)
+      reference->restart(factor, srm.reduce_tensile_strength);
+    run_load_history();
+    const double final_seconds = final_clock.wall_time();
+
+    search.write_csv(parameters.output.directory + "/" +
+                     parameters.output.base_name + "-strength-reduction.csv");
+    pcout << search.result_line() << "\n";
+    if (!search.closed_form_line().empty())
+      pcout << "  " << search.closed_form_line() << "\n";
+    double trial_seconds = 0.;
+    for (const auto &trial : search.trials())
+      trial_seconds += trial.seconds;
+    pcout << "  " << search.trials().size()
+          << " trial load histories and the final one on one set-up "
+             "(factorisations and flexibilities reused)";
+    if (!parameters.run.test_mode)
+      pcout << ": set-up " << std::fixed << std::setprecision(2)
+            << setup_seconds << " s, trials " << trial_seconds
+            << " s, final run " << final_seconds << " s; in all "
+            << std::setprecision(1)
+            << (setup_seconds + trial_seconds + final_seconds) /
+                 (setup_seconds + search.trials().front().seconds)
+            << " times one run of the model at F = 1" << std::defaultfloat
+            << std::setprecision(6);
+    pcout << "\n";
+  }
+
+
+
+  template <int dim>
+  StrengthTrial
+  MultiBodyProblem<dim>::run_trial(const double factor,
+                                   const bool   statics_bound)
+  {
+    StrengthTrial trial;
+    trial.factor = factor;
+    const unsigned int first_increment =
+      parameters.in_situ_stress.enabled ? 0 : 1;
+    trial.n_increments =
+      parameters.load_history.n_increments + 1 - first_increment;
+    const bool reduce_tension =
+      parameters.strength_reduction.reduce_tensile_strength;
+    contact->restart(factor, reduce_tension);
+    if (reference)
+      reference->restart(factor, reduce_tension);
+
+    const bool was_active = pcout.is_active();
+    pcout.set_condition(false);
+    trial_run                = true;
+    double     bound         = std::numeric_limits<double>::infinity();
+    const auto measure_bound = [&](const bool last) {
+      if (!statics_bound)
+        return;
+      // Unbroken: an upper bound whatever pairs another trial breaks.
+      // (strength_factor_bounded: the search hit its bound of 1000.) The
+      // mechanism's limit equilibrium only where the history ends.
+      const auto result = contact->certify(last, true);
+      if (!result.strength_factor_bounded)
+        bound = std::min(bound, factor * result.strength_factor);
+      if (last && !result.limit_mechanism.empty() &&
+          !result.mechanism_factor_bounded)
+        trial.mechanism_factor = factor * result.mechanism_factor;
+    };
+    std::set<std::string> methods;
+    Timer                 clock;
+    try
+      {
+        for (unsigned int k = first_increment;
+             k <= parameters.load_history.n_increments;
+             ++k)
+          {
+            do_increment(k);
+            ++trial.increments;
+            methods.insert(to_string(contact->last_method()));
+            trial.iterations += contact->last_iterations().first +
+                                contact->last_iterations().second;
+            measure_bound(k == parameters.load_history.n_increments);
+          }
+      }
+    catch (const ExceptionBase &e)
+      {
+        const int code = exit_code(e);
+        if (code == 2)
+          trial.outcome = StrengthTrial::Outcome::no_equilibrium;
+        else if (code == 4)
+          trial.outcome = StrengthTrial::Outcome::none_along_mechanism;
+        else if (code == 3 ||
+                 dynamic_cast<const Exceptions::ExcIncrementNotConverged *>(&e))
+          trial.outcome = StrengthTrial::Outcome::not_converged;
+        else
+          {
+            pcout.set_condition(was_active);
+            trial_run = false;
+            throw;
+          }
+        measure_bound(true);
+      }
+    trial.seconds = clock.wall_time();
+    pcout.set_condition(was_active);
+    trial_run = false;
+    for (const auto &method : methods)
+      trial.methods += (trial.methods.empty() ? "" : "+") + method;
+    for (const auto &block : blocks)
+      trial.largest_displacement =
+        std::max(trial.largest_displacement, max_displacement(*block));
+    trial.largest_slip = max_slip(*contact);
+    if (std::isfinite(bound))
+      trial.statics_bound = bound;
+    return trial;
   }
 
 
@@ -259,6 +399,16 @@ namespace mbfem
           make_solver(ContactFormulation::monolithic);
         monolithic_seconds += clock.wall_time();
       }
+    if (parameters.water_pressure.enabled())
+      {
+        water = std::make_unique<JointWater<dim>>(parameters.water_pressure,
+                                                  parameters.contact,
+                                                  contact->pairs(),
+                                                  blocks.size());
+        pcout << "  water pressure on " << water->n_wet_pairs() << " of "
+              << contact->pairs().size()
+              << " pairs (both faces of the joint)\n";
+      }
     pcout << "  contact formulation: "
           << (!contact_parameters.runs_monolithic() ? "condensed" :
               !contact_parameters.runs_condensed()  ? "monolithic" :
@@ -326,11 +476,23 @@ namespace mbfem
     std::string pair_file;
     if (contact)
       {
-        pair_file = write_pair_files(*contact, parameters.output, k, time);
-        write_summary(k, time, iterations, reference_iterations);
+        if (!trial_run)
+          {
+            std::vector<double> water_pressure;
+            for (unsigned int i = 0; water && i < contact->pairs().size(); ++i)
+              water_pressure.push_back(water->pressure(i, time));
+            pair_file = write_pair_files(
+              *contact, parameters.output, k, time, water_pressure);
+            write_summary(k, time, iterations, reference_iterations);
+          }
         contact->commit();
         if (reference)
           reference->commit();
+      }
+    if (trial_run)
+      {
+        stop_if_signalled(k);
+        return;
       }
     if (writer)
       {
@@ -693,13 +855,16 @@ namespace mbfem
       !contact || contact->formulation() == ContactFormulation::condensed;
     {
       TimerOutput::Scope t(timer, "load response");
-      for (const auto &block : blocks)
+      for (unsigned int b = 0; b < blocks.size(); ++b)
         {
-          block->assemble_load(parameters.boundary_conditions, time);
+          Block<dim> &block = *blocks[b];
+          block.assemble_load(parameters.boundary_conditions, time);
+          if (water)
+            water->add_load(b, block, time);
           if (condensed)
             {
               Timer clock;
-              block->solve();
+              block.solve();
               condensed_seconds += clock.wall_time();
             }
         }
@@ -1196,6 +1361,10 @@ namespace mbfem
           << ", max von Mises = " << max_von_mises << std::defaultfloat
           << std::setprecision(6) << "\n";
 
+    if (water)
+      pcout << "    water in the joints: sum of p_w A = " << std::scientific
+            << std::setprecision(6) << water->resultant(time)
+            << std::defaultfloat << std::setprecision(6) << "\n";
     // The resultant each interface transmits (force on its side b).
     if (contact)
       for (unsigned int i = 0; i < parameters.contact.interfaces.size(); ++i)

@@ -21,10 +21,14 @@ namespace mbfem
     prm.declare_entry(
       "Mode",
       "simulation",
-      Patterns::Selection("simulation|order study"),
+      Patterns::Selection("simulation|order study|strength reduction"),
       "'simulation': run the load history once. 'order study': solve the "
       "problem for every degree and refinement level in subsection 'Order "
-      "study' and tabulate the errors against subsection 'Exact solution'.");
+      "study' and tabulate the errors against subsection 'Exact solution'. "
+      "'strength reduction': the factor of safety F, the largest divisor of "
+      "the joints' tan(phi) and cohesion at which the load history still "
+      "converges (subsection 'Strength reduction'); the results written are "
+      "those at F.");
     prm.declare_entry(
       "Test mode",
       "false",
@@ -63,6 +67,8 @@ namespace mbfem
     InSituStress::declare_parameters(prm);
     Excavation::declare_parameters(prm);
     PlasticityParameters::declare_parameters(prm);
+    StrengthReductionParameters::declare_parameters(prm);
+    WaterPressureParameters<dim>::declare_parameters(prm);
   }
 
 
@@ -87,6 +93,24 @@ namespace mbfem
     in_situ_stress.parse_parameters(prm);
     excavation.parse_parameters(prm);
     plasticity.parse_parameters(prm);
+    strength_reduction.parse_parameters(prm);
+    water_pressure.parse_parameters(prm);
+    AssertThrow(!water_pressure.enabled() || contact.declares_interfaces(),
+                ExcMessage("Water pressure/Interfaces names wet joints, but "
+                           "the model declares no contact interface "
+                           "(Contact/Interfaces)."));
+    AssertThrow(run.mode != "strength reduction" ||
+                  contact.declares_interfaces(),
+                ExcMessage("Mode = strength reduction divides the joints' "
+                           "strength, but the model declares no contact "
+                           "interface (Contact/Interfaces)."));
+    AssertThrow(run.mode != "strength reduction" || !plasticity.enabled,
+                ExcMessage("Mode = strength reduction reduces the joints' "
+                           "strength only; with 'Plasticity/Enabled = true' "
+                           "the rock's strength would stay as it is, and "
+                           "the plastic strain would have to be reset per "
+                           "trial. Not supported yet: run the plastic model "
+                           "at chosen strengths with Mode = simulation."));
     const bool excavates = !excavation.excavated_ids.empty() ||
                            !excavation.released_boundaries.empty();
     AssertThrow(!excavates || in_situ_stress.enabled,

@@ -635,6 +635,21 @@ namespace mbfem
 
   template <int dim>
   void
+  Block<dim>::add_external_point_forces(
+    const std::vector<types::global_dof_index> &dofs,
+    const std::vector<double>                  &forces)
+  {
+    AssertDimension(dofs.size(), forces.size());
+    Vector<double> local(forces.begin(), forces.end());
+    // At a prescribed DoF the support takes the force: no lifting term.
+    physical_constraints.distribute_local_to_global(local, dofs, physical_load);
+    add_point_forces(dofs, forces);
+  }
+
+
+
+  template <int dim>
+  void
   Block<dim>::solve(const std::vector<double> &alpha)
   {
     direct_solver.solve(solution, load);

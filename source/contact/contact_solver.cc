@@ -86,6 +86,31 @@ namespace mbfem
     committed_displacement.assign(n_pairs, Tensor<1, dim>());
     current              = committed;
     current_displacement = committed_displacement;
+    initial              = committed;
+    for (const auto &pair : contact_pairs)
+      nominal_joints.push_back(pair.joint);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::restart(const double strength_factor,
+                              const bool   reduce_tension)
+  {
+    AssertThrow(strength_factor > 0., ExcInternalError());
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      contact_pairs[k].joint =
+        nominal_joints[k].reduced(strength_factor, reduce_tension);
+    committed = initial;
+    committed_displacement.assign(n_pairs, Tensor<1, dim>());
+    committed_solution.reinit(0);
+    current              = committed;
+    current_displacement = committed_displacement;
+    current_solution.reinit(0);
+    method          = StateMethod::fast;
+    fast_iterations = 0;
+    path_switches   = 0;
   }
 
 
@@ -1644,7 +1669,8 @@ namespace mbfem
 
   template <int dim>
   typename StaticAdmissibility<dim>::Result
-  ContactSolver<dim>::certify(const bool with_mechanism_factor) const
+  ContactSolver<dim>::certify(const bool with_mechanism_factor,
+                              const bool unbroken) const
   {
     using Certificate = StaticAdmissibility<dim>;
     std::vector<typename Certificate::Candidate> candidates(n_pairs);
@@ -1652,7 +1678,7 @@ namespace mbfem
       {
         candidates[k].joint  = contact_pairs[k].joint;
         candidates[k].area   = contact_pairs[k].area;
-        candidates[k].broken = current.broken[k];
+        candidates[k].broken = !unbroken && current.broken[k];
         candidates[k].tied   = contact_pairs[k].tied;
         if (k < held.size())
           candidates[k].held = held[k];

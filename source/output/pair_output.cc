@@ -26,9 +26,10 @@ namespace mbfem
 
     template <int dim>
     std::string
-    pair_table(const ContactSolver<dim> &contact,
-               const unsigned int        increment,
-               const double              time)
+    pair_table(const ContactSolver<dim>  &contact,
+               const unsigned int         increment,
+               const double               time,
+               const std::vector<double> &water)
     {
       const char        *axes[] = {"x", "y", "z"};
       std::ostringstream csv;
@@ -42,7 +43,8 @@ namespace mbfem
       csv << ",gap";
       for (unsigned int d = 1; d < dim; ++d)
         csv << ",slip_" << d;
-      csv << ",state,broken,area,initial_gap\n";
+      csv << ",state,broken,area,initial_gap"
+          << (water.empty() ? "" : ",water_pressure") << "\n";
 
       const auto &pairs = contact.pairs();
       for (unsigned int i = 0; i < pairs.size(); ++i)
@@ -62,6 +64,8 @@ namespace mbfem
           csv << "," << to_string(contact.state(i)) << ","
               << (contact.broken(i) ? 1 : 0);
           append(csv, {pair.area, pair.initial_gap});
+          if (!water.empty())
+            append(csv, {water[i]});
           csv << "\n";
         }
       return csv.str();
@@ -85,10 +89,14 @@ namespace mbfem
 
     template <int dim>
     std::string
-    pair_point_set(const ContactSolver<dim> &contact)
+    pair_point_set(const ContactSolver<dim>  &contact,
+                   const std::vector<double> &water)
     {
       const auto        &pairs = contact.pairs();
-      std::ostringstream points, state, traction, gap, slip, normal;
+      std::ostringstream points, state, traction, gap, slip, normal, pressure;
+      pressure.precision(10);
+      for (const double p : water)
+        pressure << p << " ";
       for (std::ostringstream *stream : {&points, &traction, &gap, &slip})
         stream->precision(10);
       for (unsigned int i = 0; i < pairs.size(); ++i)
@@ -135,6 +143,9 @@ namespace mbfem
           << data_array("Float64", "gap", 1, gap.str())
           << data_array("Float64", "slip", 3, slip.str())
           << data_array("Float64", "normal", 3, normal.str())
+          << (water.empty() ?
+                "" :
+                data_array("Float64", "water_pressure", 1, pressure.str()))
           << "</PointData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
       return vtu.str();
     }
@@ -144,19 +155,20 @@ namespace mbfem
 
   template <int dim>
   std::string
-  write_pair_files(const ContactSolver<dim> &contact,
-                   const OutputParameters   &output,
-                   const unsigned int        increment,
-                   const double              time)
+  write_pair_files(const ContactSolver<dim>  &contact,
+                   const OutputParameters    &output,
+                   const unsigned int         increment,
+                   const double               time,
+                   const std::vector<double> &water_pressure)
   {
     const std::string stem =
       output.base_name + "-pairs-" + Utilities::int_to_string(increment, 4);
     write_file_atomically(output.directory + "/" + stem + ".csv",
-                          pair_table(contact, increment, time));
+                          pair_table(contact, increment, time, water_pressure));
     if (!output.write_vtu)
       return "";
     write_file_atomically(output.directory + "/" + stem + ".vtu",
-                          pair_point_set(contact));
+                          pair_point_set(contact, water_pressure));
     return stem + ".vtu";
   }
 
@@ -166,10 +178,12 @@ namespace mbfem
   write_pair_files(const ContactSolver<2> &,
                    const OutputParameters &,
                    const unsigned int,
-                   const double);
+                   const double,
+                   const std::vector<double> &);
   template std::string
   write_pair_files(const ContactSolver<3> &,
                    const OutputParameters &,
                    const unsigned int,
-                   const double);
+                   const double,
+                   const std::vector<double> &);
 } // namespace mbfem

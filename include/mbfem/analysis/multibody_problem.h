@@ -1,8 +1,10 @@
 #ifndef mbfem_analysis_multibody_problem_h
 #define mbfem_analysis_multibody_problem_h
 
+#include <mbfem/analysis/strength_reduction.h>
 #include <mbfem/block/block.h>
 #include <mbfem/contact/contact_solver.h>
+#include <mbfem/interface/joint_water.h>
 #include <mbfem/output/output.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -67,6 +69,28 @@ namespace mbfem
      */
     void
     make_contact();
+
+    /** Every increment of the load history, from the start. */
+    void
+    run_load_history();
+
+    /**
+     * Mode = strength reduction: the factor of safety by trials of the
+     * whole load history at reduced joint strengths, on the same blocks,
+     * factorisations and flexibilities; then the load history at the
+     * factor found, with output, and the table of the trials.
+     */
+    void
+    run_strength_reduction(const double setup_seconds);
+
+    /**
+     * One trial of run_strength_reduction(): the load history from the
+     * start at the joints' strengths divided by @p factor, silent and
+     * without output; with @p statics_bound the certificate's strength
+     * factor after every increment.
+     */
+    StrengthTrial
+    run_trial(const double factor, const bool statics_bound);
 
     /** The output folder, and the PVD writers of blocks and pairs. */
     void
@@ -266,6 +290,12 @@ namespace mbfem
      */
     double condensed_seconds  = 0.;
     double monolithic_seconds = 0.;
+
+    /** Water pressure in the joints, if any joint is wet. */
+    std::unique_ptr<JointWater<dim>> water;
+
+    /** A trial of strength reduction: nothing printed or written. */
+    bool trial_run = false;
 
     /** Steps in which Newton gave way to the initial-stress method. */
     unsigned int newton_suspensions = 0;

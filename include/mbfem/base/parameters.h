@@ -4,9 +4,11 @@
 #include <mbfem/analysis/exact_solution.h>
 #include <mbfem/analysis/load_history.h>
 #include <mbfem/analysis/order_study.h>
+#include <mbfem/analysis/strength_reduction.h>
 #include <mbfem/block/block.h>
 #include <mbfem/block/boundary_conditions.h>
 #include <mbfem/interface/contact_interface.h>
+#include <mbfem/interface/joint_water.h>
 #include <mbfem/linear_algebra/direct_solver.h>
 #include <mbfem/material/in_situ_stress.h>
 #include <mbfem/material/material.h>
@@ -68,6 +70,8 @@ namespace mbfem
     InSituStress                           in_situ_stress;
     Excavation                             excavation;
     PlasticityParameters                   plasticity;
+    StrengthReductionParameters            strength_reduction;
+    WaterPressureParameters<dim>           water_pressure;
   };
 
   /**

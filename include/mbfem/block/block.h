@@ -148,6 +148,15 @@ namespace mbfem
                      const std::vector<double>                  &forces);
 
     /**
+     * Adds point forces that are part of the external load (water pressure
+     * on the faces of a joint): to the load, to F_e and to the monolithic
+     * system's physical load, after assemble_load().
+     */
+    void
+    add_external_point_forces(const std::vector<types::global_dof_index> &dofs,
+                              const std::vector<double> &forces);
+
+    /**
      * solution = K^{-1} load, with the prescribed values filled in, plus
      * the rigid-body motion sum_i alpha_i floating_modes()[i] if given.
      */

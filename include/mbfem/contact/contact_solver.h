@@ -139,6 +139,15 @@ namespace mbfem
     void
     commit();
 
+    /**
+     * Back to the states before the first increment (no slip, nothing
+     * broken), with every joint's strength divided by @p strength_factor
+     * (JointLaw::reduced()): a trial of strength reduction. The
+     * flexibilities and factorisations stay as they are.
+     */
+    void
+    restart(const double strength_factor, const bool reduce_tension = true);
+
     /** Contact forces on block @p b as (DoF, force) lists. */
     void
     forces_on_block(const unsigned int                    b,
@@ -200,10 +209,14 @@ namespace mbfem
      * every candidate pair's Mohr-Coulomb cone balance all floating blocks
      * together? The pairs' broken flags are those of the last trial. The
      * result's description names the verdict, the strength factor and,
-     * if none exist, each moving block's translation and rotation.
+     * if none exist, each moving block's translation and rotation. With
+     * @p unbroken every pair keeps its cohesion and tensile strength: the
+     * strength factor is then an upper bound for any load path (breaking
+     * only takes strength away), which strength reduction needs.
      */
     typename StaticAdmissibility<dim>::Result
-    certify(const bool with_mechanism_factor = true) const;
+    certify(const bool with_mechanism_factor = true,
+            const bool unbroken              = false) const;
 
     /**
      * Names of the floating blocks none of whose pairs stuck in the
@@ -643,7 +656,13 @@ namespace mbfem
                  const Segment &segment,
                  const Event   &event) const;
 
-    const std::vector<ContactPair<dim>>    contact_pairs;
+    /** The pairs; their joint laws are the nominal ones reduced by restart().
+     */
+    std::vector<ContactPair<dim>> contact_pairs;
+    /** The nominal joint law of every pair (strength reduction divides it). */
+    std::vector<JointLaw> nominal_joints;
+    /** The states before the first increment, for restart(). */
+    Trial                                  initial;
     const unsigned int                     max_iterations;
     const unsigned int                     n_pairs;
     const ContactFormulation               contact_formulation;

@@ -41,6 +41,22 @@ namespace mbfem
       return (broken ? 0. : tensile_strength) * area;
     }
 
+    /**
+     * The law of strength reduction at factor @p factor: tan(phi) / F and
+     * c / F, and sigma_t / F if @p reduce_tension (as the statics
+     * certificate divides all three).
+     */
+    JointLaw
+    reduced(const double factor, const bool reduce_tension = true) const
+    {
+      JointLaw law = *this;
+      law.friction_coefficient /= factor;
+      law.cohesion /= factor;
+      if (reduce_tension)
+        law.tensile_strength /= factor;
+      return law;
+    }
+
     /** Whether a pair of this joint breaks when it opens or fails. */
     bool
     has_strength() const
