@@ -150,6 +150,11 @@ main(int argc, char *argv[])
     }
   catch (mbfem::Interrupted &stop)
     {
+      if (stop.last_complete_increment == -2)
+        return report_signal(stop.signal,
+                             "during a trial of strength reduction; the "
+                             "trials so far are in the strength-reduction "
+                             "CSV, no results were written");
       if (stop.last_complete_increment < 0)
         return report_signal(stop.signal,
                              "during the set-up, before the first increment; "

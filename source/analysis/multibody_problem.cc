@@ -168,21 +168,25 @@ namespace mbfem
   MultiBodyProblem<dim>::run_strength_reduction(const double setup_seconds)
   {
     const auto       &srm = parameters.strength_reduction;
-    StrengthReduction search(srm, pcout.get_stream(), parameters.run.test_mode);
-    const double      factor = search.search(
+    StrengthReduction search(srm,
+                             pcout.get_stream(),
+                             parameters.run.test_mode,
+                             parameters.output.directory + "/" +
+                               parameters.output.base_name +
+                               "-strength-reduction.csv");
+    // The formulation's time of the run at F, not of the trials.
+    const double condensed_setup = condensed_seconds;
+    const double factor          = search.search(
       [&](const double f) { return run_trial(f, search.trials().empty()); });
 
     pcout << "The load history at F = " << factor
           << ", the last factor that converged:\n";
+    condensed_seconds = condensed_setup;
     Timer final_clock;
     contact->restart(factor, srm.reduce_tensile_strength);
-    if (reference)
-      reference->restart(factor, srm.reduce_tensile_strength);
     run_load_history();
     const double final_seconds = final_clock.wall_time();
 
-    search.write_csv(parameters.output.directory + "/" +
-                     parameters.output.base_name + "-strength-reduction.csv");
     pcout << search.result_line() << "\n";
     if (!search.closed_form_line().empty())
       pcout << "  " << search.closed_form_line() << "\n";
@@ -206,86 +210,131 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /**
+     * A trial of strength reduction while it lives, however it ends (a
+     * failure, a signal): the screen silent and nothing written
+     * (MultiBodyProblem::trial_run).
+     */
+    class TrialScope
+    {
+    public:
+      TrialScope(ConditionalOStream &pcout, bool &trial_run)
+        : pcout(pcout)
+        , was_active(pcout.is_active())
+        , trial_run(trial_run)
+      {
+        pcout.set_condition(false);
+        trial_run = true;
+      }
+
+      ~TrialScope()
+      {
+        pcout.set_condition(was_active);
+        trial_run = false;
+      }
+
+    private:
+      ConditionalOStream &pcout;
+      const bool          was_active;
+      bool               &trial_run;
+    };
+
+
+
+    /**
+     * How a trial's failure counts (the exit code a plain run would have
+     * ended with); any other error ends the run, naming the trial.
+     */
+    StrengthTrial::Outcome
+    trial_outcome(const ExceptionBase &e, const double factor)
+    {
+      const int code = exit_code(e);
+      if (code == 2)
+        return StrengthTrial::Outcome::no_equilibrium;
+      if (code == 4)
+        return StrengthTrial::Outcome::none_along_mechanism;
+      if (code == 3 ||
+          dynamic_cast<const Exceptions::ExcIncrementNotConverged *>(&e))
+        return StrengthTrial::Outcome::not_converged;
+      std::ostringstream message;
+      message << "Strength reduction, the trial at F = " << factor << ": "
+              << message_of(e);
+      AssertThrow(false, ExcMessage(message.str()));
+      return StrengthTrial::Outcome::not_converged;
+    }
+  } // namespace
+
+
+
   template <int dim>
   StrengthTrial
   MultiBodyProblem<dim>::run_trial(const double factor,
                                    const bool   statics_bound)
   {
-    StrengthTrial trial;
-    trial.factor = factor;
-    const unsigned int first_increment =
-      parameters.in_situ_stress.enabled ? 0 : 1;
-    trial.n_increments =
-      parameters.load_history.n_increments + 1 - first_increment;
-    const bool reduce_tension =
-      parameters.strength_reduction.reduce_tensile_strength;
-    contact->restart(factor, reduce_tension);
-    if (reference)
-      reference->restart(factor, reduce_tension);
+    StrengthTrial      trial;
+    const unsigned int first = parameters.in_situ_stress.enabled ? 0 : 1;
+    const unsigned int last  = parameters.load_history.n_increments;
+    trial.factor             = factor;
+    trial.n_increments       = last + 1 - first;
+    contact->restart(factor,
+                     parameters.strength_reduction.reduce_tensile_strength);
+    const TrialScope scope(pcout, trial_run);
 
-    const bool was_active = pcout.is_active();
-    pcout.set_condition(false);
-    trial_run                = true;
-    double     bound         = std::numeric_limits<double>::infinity();
-    const auto measure_bound = [&](const bool last) {
-      if (!statics_bound)
-        return;
-      // Unbroken: an upper bound whatever pairs another trial breaks.
-      // (strength_factor_bounded: the search hit its bound of 1000.) The
-      // mechanism's limit equilibrium only where the history ends.
-      const auto result = contact->certify(last, true);
-      if (!result.strength_factor_bounded)
-        bound = std::min(bound, factor * result.strength_factor);
-      if (last && !result.limit_mechanism.empty() &&
-          !result.mechanism_factor_bounded)
-        trial.mechanism_factor = factor * result.mechanism_factor;
-    };
     std::set<std::string> methods;
     Timer                 clock;
     try
       {
-        for (unsigned int k = first_increment;
-             k <= parameters.load_history.n_increments;
-             ++k)
+        for (unsigned int k = first; k <= last; ++k)
           {
             do_increment(k);
             ++trial.increments;
             methods.insert(to_string(contact->last_method()));
             trial.iterations += contact->last_iterations().first +
                                 contact->last_iterations().second;
-            measure_bound(k == parameters.load_history.n_increments);
+            trial.largest_displacement = 0.;
+            for (const auto &block : blocks)
+              trial.largest_displacement =
+                std::max(trial.largest_displacement, max_displacement(*block));
+            trial.largest_slip = max_slip(*contact);
+            if (statics_bound)
+              measure_statics(trial, k == last);
           }
       }
     catch (const ExceptionBase &e)
       {
-        const int code = exit_code(e);
-        if (code == 2)
-          trial.outcome = StrengthTrial::Outcome::no_equilibrium;
-        else if (code == 4)
-          trial.outcome = StrengthTrial::Outcome::none_along_mechanism;
-        else if (code == 3 ||
-                 dynamic_cast<const Exceptions::ExcIncrementNotConverged *>(&e))
-          trial.outcome = StrengthTrial::Outcome::not_converged;
-        else
-          {
-            pcout.set_condition(was_active);
-            trial_run = false;
-            throw;
-          }
-        measure_bound(true);
+        trial.outcome = trial_outcome(e, factor);
+        if (statics_bound)
+          measure_statics(trial, true);
       }
     trial.seconds = clock.wall_time();
-    pcout.set_condition(was_active);
-    trial_run = false;
     for (const auto &method : methods)
       trial.methods += (trial.methods.empty() ? "" : "+") + method;
-    for (const auto &block : blocks)
-      trial.largest_displacement =
-        std::max(trial.largest_displacement, max_displacement(*block));
-    trial.largest_slip = max_slip(*contact);
-    if (std::isfinite(bound))
-      trial.statics_bound = bound;
     return trial;
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::measure_statics(StrengthTrial &trial,
+                                         const bool     last) const
+  {
+    // Unbroken: an upper bound whatever pairs another trial breaks
+    // (strength_factor_bounded: the search hit its bound of 1000). The
+    // mechanism's limit equilibrium only where the history ends.
+    const auto result = contact->certify(last, true);
+    if (!result.strength_factor_bounded)
+      {
+        const double bound  = trial.factor * result.strength_factor;
+        trial.statics_bound = std::isnan(trial.statics_bound) ?
+                                bound :
+                                std::min(trial.statics_bound, bound);
+      }
+    if (last && !result.limit_mechanism.empty() &&
+        !result.mechanism_factor_bounded)
+      trial.mechanism_factor = trial.factor * result.mechanism_factor;
   }
 
 
@@ -454,7 +503,8 @@ namespace mbfem
       solve_increment(k, iterations, reference_iterations, plastic_update);
     for (const auto &block : blocks)
       block->plastic_state().commit();
-    if (dim == 3 && contact && contact->count(ContactState::slip) > 0)
+    if (dim == 3 && !trial_run && contact &&
+        contact->count(ContactState::slip) > 0)
       pcout << "    friction against the slip made: largest angle "
             << std::fixed << std::setprecision(1) << contact->misalignment()
             << " degrees" << std::defaultfloat << std::setprecision(6) << "\n";
@@ -468,7 +518,8 @@ namespace mbfem
                     "function gives NaN or inf at this time. " +
                     earlier_results()));
 
-    print_increment(k, time, iterations);
+    if (!trial_run)
+      print_increment(k, time, iterations);
     if (parameters.plasticity.enabled)
       print_plasticity(plastic_iterations, plastic_update);
     if (reference)
@@ -483,6 +534,9 @@ namespace mbfem
               water_pressure.push_back(water->pressure(i, time));
             pair_file = write_pair_files(
               *contact, parameters.output, k, time, water_pressure);
+            if (parameters.output.write_contact_problems &&
+                contact->formulation() == ContactFormulation::condensed)
+              contact->condensed_problem(k, time).write(problem_stem(k, ""));
             write_summary(k, time, iterations, reference_iterations);
           }
         contact->commit();
@@ -491,7 +545,7 @@ namespace mbfem
       }
     if (trial_run)
       {
-        stop_if_signalled(k);
+        stop_if_signalled(-2); // -2: in a trial, nothing written
         return;
       }
     if (writer)
@@ -506,6 +560,33 @@ namespace mbfem
       }
     last_written_increment = k;
     stop_if_signalled(k); // SIGINT/SIGTERM: end here, files complete
+  }
+
+
+
+  template <int dim>
+  std::string
+  MultiBodyProblem<dim>::problem_stem(const unsigned int k,
+                                      const std::string &prefix) const
+  {
+    return parameters.output.directory + "/" + parameters.output.base_name +
+           "-" + prefix + "problem-" + Utilities::int_to_string(k, 4);
+  }
+
+
+
+  template <int dim>
+  std::string
+  MultiBodyProblem<dim>::write_failed_problem(const unsigned int k,
+                                              const double       time) const
+  {
+    if (trial_run || !contact ||
+        contact->formulation() != ContactFormulation::condensed)
+      return "";
+    const std::string stem = problem_stem(k, "failed-");
+    contact->condensed_problem(k, time, false).write(stem);
+    return "    The increment's contact problem, from its start, is in " +
+           stem + ".json (doc/contact_problems.md).\n";
   }
 
 
@@ -733,19 +814,28 @@ namespace mbfem
       if (first_failure.empty())
         first_failure = message_of(failure);
       if (halvings == history.max_halvings)
-        end_with_certificate<dim>(
-          contact.get(),
-          first_failure +
-            (history.max_halvings == 0 ?
-               "" :
-               "    The increment was also tried in steps down to 1/" +
-                 std::to_string(1u << halvings) +
-                 " of its size ('Load history/Maximum step halvings = " +
-                 std::to_string(history.max_halvings) + "').\n") +
-            "    " + earlier_results() + "\n",
-          target,
-          std::is_same_v<std::decay_t<decltype(failure)>,
-                         Exceptions::ExcNoEquilibrium>);
+        try
+          {
+            end_with_certificate<dim>(
+              contact.get(),
+              first_failure +
+                (history.max_halvings == 0 ?
+                   "" :
+                   "    The increment was also tried in steps down to 1/" +
+                     std::to_string(1u << halvings) +
+                     " of its size ('Load history/Maximum step halvings = " +
+                     std::to_string(history.max_halvings) + "').\n") +
+                "    " + earlier_results() + "\n",
+              target,
+              std::is_same_v<std::decay_t<decltype(failure)>,
+                             Exceptions::ExcNoEquilibrium>);
+          }
+        catch (const Exceptions::ExcNotConvergedButAdmissible &e)
+          {
+            // A defect of the solver: leave the problem to reproduce it.
+            throw Exceptions::ExcNotConvergedButAdmissible(
+              message_of(e) + write_failed_problem(k, target));
+          }
       for (const auto &block : blocks)
         block->plastic_state().restore();
       ++halvings;

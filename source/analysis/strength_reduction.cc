@@ -8,6 +8,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -125,10 +126,12 @@ namespace mbfem
   StrengthReduction::StrengthReduction(
     const StrengthReductionParameters &parameters,
     std::ostream                      &out,
-    const bool                         test_mode)
+    const bool                         test_mode,
+    const std::string                 &csv_file)
     : parameters(parameters)
     , out(out)
     , test_mode(test_mode)
+    , csv_file(csv_file)
   {}
 
 
@@ -141,33 +144,47 @@ namespace mbfem
     for (double factor = next_factor(); factor > 0.; factor = next_factor())
       {
         if (factor < smallest_factor)
+          fail_everywhere();
+        if (trial_list.size() >= parameters.max_trials)
           {
-            const std::string message =
-              "Strength reduction: the load history fails at every factor "
-              "tried, down to F = " +
-              std::to_string(hi) +
-              ": the model has no equilibrium even with the joints' "
-              "strengths multiplied by " +
-              std::to_string(1. / hi) +
-              ". Run it with Mode = simulation to see why.";
-            // Exit code 2 where statics proved it at the last trial.
-            if (trial_list.back().outcome ==
-                StrengthTrial::Outcome::no_equilibrium)
-              throw Exceptions::ExcNoEquilibrium(message);
-            AssertThrow(false, ExcMessage(message));
+            std::ostringstream message;
+            message << "Strength reduction: no bracket narrower than "
+                       "'Strength reduction/Tolerance' after "
+                    << trial_list.size()
+                    << " trials ('Strength reduction/Maximum trials'); the "
+                       "last bracket was ["
+                    << lo << ", " << hi << "]. The trials are in <" << csv_file
+                    << ">.";
+            AssertThrow(false, ExcMessage(message.str()));
           }
-        AssertThrow(trial_list.size() < parameters.max_trials,
-                    ExcMessage(
-                      "Strength reduction: no bracket narrower than "
-                      "'Strength reduction/Tolerance' after " +
-                      std::to_string(trial_list.size()) +
-                      " trials ('Strength reduction/Maximum trials'); the "
-                      "last bracket was [" +
-                      std::to_string(lo) + ", " + std::to_string(hi) + "]."));
         try_factor(run_trial, factor);
       }
     AssertThrow(lo > 0., ExcInternalError());
     return lo;
+  }
+
+
+
+  void
+  StrengthReduction::fail_everywhere() const
+  {
+    // Say what the failures were: statics proved them, or the iteration
+    // gave up (then the model may well hold).
+    const StrengthTrial::Outcome last = trial_list.back().outcome;
+    std::ostringstream           message;
+    message << "Strength reduction: the load history fails at every factor "
+               "tried, down to F = "
+            << hi << " (the joints' strengths multiplied by " << 1. / hi
+            << "); the last trial ended with '" << to_string(last) << "'"
+            << (last == StrengthTrial::Outcome::no_equilibrium ?
+                  ": no contact forces within the joints' strength hold the "
+                  "blocks, so the model has no factor of safety." :
+                  ", which proves nothing of the model.")
+            << " Run it with Mode = simulation to see why.";
+    if (last == StrengthTrial::Outcome::no_equilibrium)
+      throw Exceptions::ExcNoEquilibrium(message.str());
+    AssertThrow(false, ExcMessage(message.str()));
+    std::abort(); // not reached: AssertThrow threw
   }
 
 
@@ -183,6 +200,8 @@ namespace mbfem
       hi = std::min(hi, factor);
     trial_list.push_back(trial);
     print_trial(trial);
+    if (!csv_file.empty())
+      write_csv(csv_file);
   }
 
 
@@ -285,15 +304,19 @@ namespace mbfem
     line << std::setprecision(6);
     if (std::isinf(hi))
       line << "factor of safety at least " << lo << " (every F up to " << lo
-           << " converged)";
+           << " converged";
     else
       line << "factor of safety = " << lo << " (bracket [" << lo << ", " << hi
            << "]";
-    const double bound = statics_bound();
+    // With sigma_t kept, the certificate (which divides it) is no bound.
+    const std::string name  = parameters.reduce_tensile_strength ?
+                                "statics bound" :
+                                "statics estimate with sigma_t / F";
+    const double      bound = statics_bound();
     if (std::isfinite(bound))
-      line << ", statics bound " << bound << ")";
+      line << ", " << name << " " << bound << ")";
     else
-      line << ", statics bound above 1000 or none)";
+      line << ", " << name << " above 1000 or none)";
     const double guess = mechanism_factor();
     if (std::isfinite(guess) && std::isfinite(bound) && guess < bound)
       line << "\n  limit equilibrium along the statics limit's mechanism: "

@@ -104,6 +104,22 @@ namespace mbfem
                 ExcMessage("Mode = strength reduction divides the joints' "
                            "strength, but the model declares no contact "
                            "interface (Contact/Interfaces)."));
+    AssertThrow(run.mode != "strength reduction" ||
+                  contact.formulation ==
+                    ContactParameters::Formulation::condensed,
+                ExcMessage("Mode = strength reduction runs the condensed "
+                           "formulation only: the monolithic one has "
+                           "neither the load path nor the Newton method, "
+                           "so near the limit it would decide F, not the "
+                           "model. Set 'Contact/Formulation = condensed'."));
+    // Entries read only by strength reduction would be ignored silently.
+    AssertThrow(run.mode == "strength reduction" ||
+                  strength_reduction.closed_form_text.empty(),
+                ExcMessage("'Strength reduction/Closed-form factor of "
+                           "safety' is given, but Mode = " +
+                           run.mode +
+                           " runs no strength reduction: set Mode = "
+                           "strength reduction, or remove the entry."));
     AssertThrow(run.mode != "strength reduction" || !plasticity.enabled,
                 ExcMessage("Mode = strength reduction reduces the joints' "
                            "strength only; with 'Plasticity/Enabled = true' "

@@ -31,6 +31,17 @@ namespace mbfem
                         Patterns::Bool(),
                         "Write the displacement and stress fields of every "
                         "block at every load increment for ParaView.");
+      prm.declare_entry(
+        "Write contact problems",
+        "false",
+        Patterns::Bool(),
+        "Write each increment's condensed contact problem u = W r + q + G "
+        "alpha, G^T r + f = 0 with its joint data and the solution found, "
+        "in FCLIB's conventions (per pair the normal component first): "
+        "BASE-problem-STEP.json, -W.mtx and -G.mtx (Matrix Market); see "
+        "doc/contact_problems.md. An increment on which the state iteration "
+        "gives up (exit code 3) is always written, as "
+        "BASE-failed-problem-STEP. Condensed formulation only.");
     }
     prm.leave_subsection();
   }
@@ -42,9 +53,10 @@ namespace mbfem
   {
     prm.enter_subsection("Output");
     {
-      directory = prm.get("Directory");
-      base_name = prm.get("Base name");
-      write_vtu = prm.get_bool("Write VTU");
+      directory              = prm.get("Directory");
+      base_name              = prm.get("Base name");
+      write_vtu              = prm.get_bool("Write VTU");
+      write_contact_problems = prm.get_bool("Write contact problems");
     }
     prm.leave_subsection();
     AssertThrow(!base_name.empty() && base_name.find('/') == std::string::npos,

@@ -92,6 +92,14 @@ namespace mbfem
     StrengthTrial
     run_trial(const double factor, const bool statics_bound);
 
+    /**
+     * run_trial(): the statics certificate (every pair unbroken) after an
+     * increment into @p trial's statics bound, and at the @p last one the
+     * limit equilibrium along its mechanism.
+     */
+    void
+    measure_statics(StrengthTrial &trial, const bool last) const;
+
     /** The output folder, and the PVD writers of blocks and pairs. */
     void
     make_writers();
@@ -269,6 +277,18 @@ namespace mbfem
      */
     std::string
     earlier_results() const;
+
+    /** Output/<base>-<prefix>problem-<k>: the stem of a contact problem. */
+    std::string
+    problem_stem(const unsigned int k, const std::string &prefix) const;
+
+    /**
+     * An increment that ends with exit code 3: writes its contact problem
+     * (condensed) and returns the sentence saying where; "" in a trial of
+     * strength reduction or without the condensed formulation.
+     */
+    std::string
+    write_failed_problem(const unsigned int k, const double time) const;
 
     Parameters<dim>                         &parameters;
     ConditionalOStream                      &pcout;

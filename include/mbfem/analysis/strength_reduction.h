@@ -107,14 +107,20 @@ namespace mbfem
   public:
     using RunTrial = std::function<StrengthTrial(double)>;
 
+    /**
+     * Prints the table to @p out and rewrites @p csv_file after every
+     * trial (so that a search that fails leaves its trials on disk).
+     */
     StrengthReduction(const StrengthReductionParameters &parameters,
                       std::ostream                      &out,
-                      const bool                         test_mode);
+                      const bool                         test_mode,
+                      const std::string                 &csv_file = "");
 
     /**
      * Runs trials until the bracket is within the tolerance; returns the
-     * largest F that converged. Throws (ExcMessage) if F = 0.001 fails or
-     * the trials run out.
+     * largest F that converged. Throws if every F down to 0.001 fails
+     * (ExcNoEquilibrium where statics proved the last one) or the trials
+     * run out.
      */
     double
     search(const RunTrial &run_trial);
@@ -151,6 +157,10 @@ namespace mbfem
     write_csv(const std::string &filename) const;
 
   private:
+    /** Every F down to 0.001 failed: throws, saying how. */
+    [[noreturn]] void
+    fail_everywhere() const;
+
     /** Runs and records one trial, and prints its line of the table. */
     void
     try_factor(const RunTrial &run_trial, const double factor);
@@ -168,6 +178,7 @@ namespace mbfem
     const StrengthReductionParameters &parameters;
     std::ostream                      &out;
     const bool                         test_mode;
+    const std::string                  csv_file;
     std::vector<StrengthTrial>         trial_list;
     double                             lo = 0.;
     double hi = std::numeric_limits<double>::infinity();

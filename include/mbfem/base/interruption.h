@@ -38,7 +38,10 @@ namespace mbfem
   struct Interrupted
   {
     int signal;
-    /** -1: stopped during the set-up, before any increment was written. */
+    /**
+     * -1: stopped during the set-up, before any increment was written;
+     * -2: during a trial of strength reduction (nothing written).
+     */
     int last_complete_increment;
   };
 

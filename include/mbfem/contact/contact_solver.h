@@ -2,6 +2,7 @@
 #define mbfem_contact_contact_solver_h
 
 #include <mbfem/block/block.h>
+#include <mbfem/contact/contact_problem.h>
 #include <mbfem/contact/monolithic_system.h>
 #include <mbfem/contact/static_admissibility.h>
 #include <mbfem/interface/contact_interface.h>
@@ -225,6 +226,17 @@ namespace mbfem
      */
     std::vector<std::string>
     blocks_without_stuck_pairs() const;
+
+    /**
+     * The condensed problem of the increment just solved (before commit())
+     * with its solution, or with @p solved false the problem of an
+     * increment that failed, from its start. Condensed formulation only
+     * (source/contact/contact_problem.cc).
+     */
+    ContactProblem<dim>
+    condensed_problem(const unsigned int increment,
+                      const double       time,
+                      const bool         solved = true) const;
 
     /** Which method concluded the last solve_increment(). */
     StateMethod
@@ -656,8 +668,7 @@ namespace mbfem
                  const Segment &segment,
                  const Event   &event) const;
 
-    /** The pairs; their joint laws are the nominal ones reduced by restart().
-     */
+    /** The pairs, with the joint laws of restart()'s strength factor. */
     std::vector<ContactPair<dim>> contact_pairs;
     /** The nominal joint law of every pair (strength reduction divides it). */
     std::vector<JointLaw> nominal_joints;

@@ -37,6 +37,8 @@ namespace mbfem
     std::string directory = "results";
     std::string base_name = "solution";
     bool        write_vtu = true;
+    /** Each increment's condensed contact problem (ContactProblem). */
+    bool write_contact_problems = false;
   };
 
   /**
