@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Pictures of a strength-reduction run (Mode = strength reduction):
 
-  /usr/bin/python3 scripts/plot_strength_reduction.py RESULTS/BASE INCREMENT OUT_PREFIX [TITLE]
+  /usr/bin/python3 scripts/plot_strength_reduction.py RESULTS/BASE INCREMENT OUT_PREFIX [TITLE] [INTERFACE]
 
 e.g. results/gravity_dam_safety 5 doc/figures/gravity_dam_safety. Reads
 RESULTS/BASE-strength-reduction.csv (a line per trial: F, result, largest
@@ -13,7 +13,8 @@ the factor of safety, written by the final run), and writes
   OUT_PREFIX_joint.png   along the joint (x): the water pressure p_w, the
                          effective normal traction r_N / A and the shear
                          |r_T| / A, with the pairs' states (stick, slip,
-                         open) as the colour of the shear points.
+                         open) as the colour of the shear points; only the
+                         pairs of interface INTERFACE (1, 2, ...) if given.
 
 Needs python3-matplotlib.
 """
@@ -84,10 +85,14 @@ def main():
         sys.exit(__doc__)
     base, increment, prefix = sys.argv[1], int(sys.argv[2]), sys.argv[3]
     title = sys.argv[4] if len(sys.argv) > 4 else base
+    pairs = read_table("%s-pairs-%04d.csv" % (base, increment))
+    joint = "the joint"
+    if len(sys.argv) > 5:
+        pairs = [r for r in pairs if r["interface"] == sys.argv[5]]
+        joint = "interface " + sys.argv[5]
     plot_trials(read_table(base + "-strength-reduction.csv"),
                 prefix + "_trials.png", title + ": trials")
-    plot_joint(read_table("%s-pairs-%04d.csv" % (base, increment)),
-               prefix + "_joint.png", title + ": the joint at F")
+    plot_joint(pairs, prefix + "_joint.png", title + ": " + joint + " at F")
 
 
 if __name__ == "__main__":
