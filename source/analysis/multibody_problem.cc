@@ -519,7 +519,10 @@ namespace mbfem
                     earlier_results()));
 
     if (!trial_run)
-      print_increment(k, time, iterations);
+      {
+        print_stage(k);
+        print_increment(k, time, iterations);
+      }
     if (parameters.plasticity.enabled)
       print_plasticity(plastic_iterations, plastic_update);
     if (reference)
@@ -560,6 +563,24 @@ namespace mbfem
       }
     last_written_increment = k;
     stop_if_signalled(k); // SIGINT/SIGTERM: end here, files complete
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_stage(const unsigned int k) const
+  {
+    const LoadHistory &history = parameters.load_history;
+    if (!history.starts_stage(k))
+      return;
+    const unsigned int s     = history.stage(k);
+    const auto        &stage = history.stages[s];
+    pcout << "stage " << s + 1 << "/" << history.stages.size() << " '"
+          << stage.name << "': t from "
+          << (s == 0 ? 0. : history.stages[s - 1].end_time) << " to "
+          << stage.end_time << " in " << stage.n_increments
+          << " increment(s)\n";
   }
 
 
@@ -1346,6 +1367,8 @@ namespace mbfem
           summary_csv += ",reference_iterations,reference_seconds,"
                          "states_differ,force_difference,gap_difference,"
                          "slip_difference";
+        if (parameters.load_history.has_stages())
+          summary_csv += ",stage";
         summary_csv += "\n";
       }
     double max_gap = 0., max_p = 0.;
@@ -1388,6 +1411,9 @@ namespace mbfem
                       last_comparison[3]);
         summary_csv += buffer;
       }
+    const LoadHistory &history = parameters.load_history;
+    if (history.has_stages())
+      summary_csv += "," + history.stages[history.stage(k)].name;
     summary_csv += "\n";
     write_file_atomically(parameters.output.directory + "/" +
                             parameters.output.base_name + "-summary.csv",

@@ -3,6 +3,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <string>
+#include <vector>
+
 namespace mbfem
 {
   using namespace dealii;
@@ -25,6 +28,36 @@ namespace mbfem
     double
     time(const unsigned int k) const;
 
+    /**
+     * A stage of the load history ('Stages'): from the end of the stage
+     * before (t = 0 for the first) to end_time in n_increments equal
+     * increments.
+     */
+    struct Stage
+    {
+      std::string  name;
+      double       end_time     = 1.;
+      unsigned int n_increments = 1;
+    };
+
+    /** Whether 'Stages' declared any (else one stage, unnamed). */
+    bool
+    has_stages() const
+    {
+      return !stages.empty();
+    }
+
+    /** The stage (index into stages) that increment @p k belongs to. */
+    unsigned int
+    stage(const unsigned int k) const;
+
+    /** Whether increment @p k is the first of its stage. */
+    bool
+    starts_stage(const unsigned int k) const;
+
+    /** The declared stages, in order; empty without 'Stages'. */
+    std::vector<Stage> stages;
+
     unsigned int n_increments = 1;
     double       end_time     = 1.;
     /**
@@ -35,6 +68,11 @@ namespace mbfem
      * increments only.
      */
     unsigned int max_halvings = 0;
+
+  private:
+    /** 'Stages': sets stages, n_increments and end_time. */
+    void
+    parse_stages(const std::string &text);
   };
 } // namespace mbfem
 

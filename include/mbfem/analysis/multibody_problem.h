@@ -238,6 +238,10 @@ namespace mbfem
                unsigned int      &reference_iterations,
                const bool         from_last_solve = false);
 
+    /** With 'Load history/Stages': a line where a stage begins. */
+    void
+    print_stage(const unsigned int k) const;
+
     void
     print_increment(const unsigned int k,
                     const double       time,
