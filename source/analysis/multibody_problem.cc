@@ -440,6 +440,11 @@ namespace mbfem
         contact = make_solver(ContactFormulation::condensed);
         condensed_seconds += clock.wall_time();
       }
+    // A line every 10 s of a long state iteration (not in test mode: its
+    // lines depend on the machine), also in the silent trials of strength
+    // reduction.
+    if (contact && pcout.is_active() && !parameters.run.test_mode)
+      contact->report_progress(&pcout.get_stream());
     if (contact_parameters.runs_monolithic())
       {
         TimerOutput::Scope t(timer, "monolithic assembly");
@@ -1465,6 +1470,9 @@ namespace mbfem
           pcout << " (fast " << contact->last_iterations().first << ", "
                 << to_string(contact->last_method()) << " "
                 << contact->last_iterations().second << ")";
+        if (!parameters.run.test_mode)
+          pcout << " in " << std::setprecision(3) << last_contact_seconds
+                << " s" << std::setprecision(6);
         pcout << ", stick/slip/open " << contact->count(ContactState::stick)
               << "/" << contact->count(ContactState::slip) << "/"
               << contact->count(ContactState::open) << ", p in ["

@@ -95,6 +95,54 @@ namespace mbfem
 
   template <int dim>
   void
+  ContactSolver<dim>::report_progress(std::ostream *out, const double seconds)
+  {
+    progress.out      = out;
+    progress.interval = seconds;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactSolver<dim>::count_states(const Trial &trial) const
+  {
+    std::array<unsigned int, 3> n = {{0, 0, 0}};
+    for (const auto state : trial.state)
+      ++n[static_cast<unsigned int>(state)];
+    return "stick/slip/open " + std::to_string(n[0]) + "/" +
+           std::to_string(n[1]) + "/" + std::to_string(n[2]);
+  }
+
+
+
+  void
+  StateProgress::start(const unsigned int k)
+  {
+    increment = k;
+    solves    = 0;
+    clock.restart();
+    next = interval;
+  }
+
+
+
+  void
+  StateProgress::step(const std::string &method, const std::string &states)
+  {
+    ++solves;
+    if (out == nullptr || clock.wall_time() < next)
+      return;
+    next = clock.wall_time() + interval;
+    *out << "    ... increment " << increment << ": " << solves
+         << " state solves in " << static_cast<int>(clock.wall_time()) << " s, "
+         << method << ", now " << states << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
   ContactSolver<dim>::restart(const double strength_factor,
                               const bool   reduce_tension)
   {
@@ -403,6 +451,7 @@ namespace mbfem
                                   Vector<double> &displacement)
   {
     const std::vector<PairEquation<dim>> equations = pair_equations(trial);
+    progress.step(to_string(method), count_states(trial));
     if (monolithic)
       {
         // A block the states cannot hold makes the whole system singular;
@@ -1138,6 +1187,7 @@ namespace mbfem
     const bool                                      from_last_solve)
   {
     set_increment_data(blocks);
+    progress.start(increment);
 
     // The fast iteration first: it concludes nearly every increment, in a
     // few solves. Its answer is refused where the states leave a

@@ -9,12 +9,14 @@
 #include <mbfem/interface/pair_equation.h>
 
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparse_direct.h>
 
 #include <map>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -74,6 +76,30 @@ namespace mbfem
 
   std::string
   to_string(const StateMethod method);
+
+  /**
+   * A progress line for a long state iteration: at most one every
+   * 'interval' seconds, naming the increment, the state solves so far,
+   * the method and the states of the trial in hand. Off without a stream
+   * (test mode: its lines depend on the machine's speed).
+   */
+  struct StateProgress
+  {
+    void
+    start(const unsigned int increment);
+
+    /** One more state solve; prints if the interval has passed. */
+    void
+    step(const std::string &method, const std::string &states);
+
+    std::ostream *out       = nullptr;
+    double        interval  = 10.;
+    unsigned int  increment = 0, solves = 0;
+    double        next = 0.;
+    Timer         clock;
+  };
+
+
 
   /**
    * The interface system of the multi-body method (paper eqs. 7-10, 15 and
@@ -139,6 +165,13 @@ namespace mbfem
     /** Accepts the converged increment as the start of the next one. */
     void
     commit();
+
+    /**
+     * Long state iterations print a progress line to @p out every
+     * @p seconds (nullptr: none).
+     */
+    void
+    report_progress(std::ostream *out, const double seconds = 10.);
 
     /**
      * Back to the states before the first increment (no slip, nothing
@@ -263,6 +296,12 @@ namespace mbfem
        */
       std::vector<double> direction_stiffness;
     };
+
+    /** "stick/slip/open a/b/c" of @p trial, for progress lines. */
+    std::string
+    count_states(const Trial &trial) const;
+
+    StateProgress progress;
 
     /** The rows (Table 1) of every pair direction for @p trial. */
     std::vector<PairEquation<dim>>
