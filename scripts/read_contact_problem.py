@@ -49,7 +49,7 @@ def load(path):
     p["Wm"] = read_matrix_market(os.path.join(folder, p["W"]))
     p["Gm"] = read_matrix_market(os.path.join(folder, p["G"]))
     for key in ("q", "f", "r", "alpha", "u", "mu", "cohesion", "tension",
-                "direction_stiffness"):
+                "direction_stiffness", "tensile_slip"):
         p[key] = np.array(p[key], dtype=float)
     p["slip_direction"] = np.array(p["slip_direction"], dtype=float)
     p["held"] = np.array(p["held"], dtype=bool)
@@ -59,6 +59,13 @@ def load(path):
 def relative(a, b):
     scale = max(np.max(np.abs(b)) if b.size else 0.0, 1e-300)
     return float(np.max(np.abs(a - b)) / scale) if a.size else 0.0
+
+
+def displacement_scale(p):
+    """The size of the terms of u = W r + q + G alpha: u itself is
+    round-off where every pair sticks."""
+    terms = (p["Wm"] @ p["r"], p["q"], p["Gm"] @ p["alpha"])
+    return max(max(np.max(np.abs(t)) if t.size else 0.0 for t in terms), 1e-300)
 
 
 def solve_states(p):
@@ -83,8 +90,10 @@ def solve_states(p):
                 A[row] = u_row[row]
                 b[row] = -q[row]
             else:
+                # a tensile slip (r_N < 0) has no friction
+                mu = 0.0 if p["tensile_slip"][k] else p["mu"][k]
                 A[row, row] += 1.0
-                A[row, k * dim] += p["mu"][k] * s[d]
+                A[row, k * dim] += mu * s[d]
                 b[row] = -p["cohesion"][k] * s[d]
                 for e in range(1, dim if beta > 0 else 1):
                     m = (1.0 if d == e else 0.0) - s[d] * s[e]
@@ -93,7 +102,14 @@ def solve_states(p):
     for a in range(n_a):
         A[n_r + a, :n_r] = G[:, a]
         b[n_r + a] = -p["f"][a]
-    x = np.linalg.solve(A, b)
+    # Equilibrate rows and columns first: force rows and displacement rows
+    # differ by the flexibility's scale, and a 3D wedge's system reached a
+    # condition number of 1e22 unscaled.
+    rows = 1.0 / np.maximum(np.max(np.abs(A), axis=1), 1e-300)
+    A = A * rows[:, None]
+    b = b * rows
+    cols = 1.0 / np.maximum(np.max(np.abs(A), axis=0), 1e-300)
+    x = np.linalg.solve(A * cols[None, :], b) * cols
     return x[:n_r], x[n_r:]
 
 
@@ -104,12 +120,13 @@ def joint_law(p, tolerance):
     r = p["r"].reshape(n, dim)
     u = p["u"].reshape(n, dim)
     force = max(np.max(np.abs(r)), 1e-300)
-    disp = max(np.max(np.abs(u)), 1e-300)
+    disp = displacement_scale(p)
     worst = {"stick": 0.0, "slip": 0.0, "open": 0.0}
     for k in range(n):
         state = p["state"][k]
         rn, rt = r[k, 0], r[k, 1:]
-        limit = p["cohesion"][k] + p["mu"][k] * max(rn, 0.0)
+        mu = 0.0 if p["tensile_slip"][k] else p["mu"][k]
+        limit = p["cohesion"][k] + mu * max(rn, 0.0)
         if p["tied"][k]:
             continue
         if state == "stick":
@@ -148,11 +165,16 @@ def main():
                                  counts["open"], p["n_alpha"],
                                  int(np.count_nonzero(p["Wm"]))))
     u = p["Wm"] @ p["r"] + p["q"] + p["Gm"] @ p["alpha"]
-    checks = [("u = W r + q + G alpha", relative(u, p["u"]), tolerance)]
+    checks = [("u = W r + q + G alpha",
+               float(np.max(np.abs(u - p["u"]))) / displacement_scale(p),
+               tolerance)]
     if p["n_alpha"]:
         eq = p["Gm"].T @ p["r"] + p["f"]
-        checks.append(("G^T r + f = 0", float(np.max(np.abs(eq))) /
-                       max(np.max(np.abs(p["f"])), 1e-300), tolerance))
+        # relative to the forces that balance, not to f (0 without loads)
+        scale = max(np.max(np.abs(p["f"])),
+                    np.max(np.abs(p["Gm"].T)) * np.max(np.abs(p["r"])), 1e-300)
+        checks.append(("G^T r + f = 0", float(np.max(np.abs(eq))) / scale,
+                       tolerance))
     r, alpha = solve_states(p)
     checks.append(("r solved here against mbfem's", relative(r, p["r"]), tolerance))
     if p["n_alpha"]:

@@ -114,6 +114,10 @@ namespace mbfem
               << ", not after the stage before it (t = " << previous
               << "): stages follow each other in time.";
         AssertThrow(stage.end_time > previous, ExcMessage(order.str()));
+        AssertThrow(stage.name.find_first_of(",\"") == std::string::npos,
+                    ExcMessage(place + ": a stage's name goes into the "
+                                       "summary CSV; write it without ',' "
+                                       "and '\"'."));
         for (const auto &other : stages)
           AssertThrow(other.name != stage.name,
                       ExcMessage(where + ": two stages are named '" +

@@ -501,9 +501,15 @@ namespace mbfem
   void
   MultiBodyProblem<dim>::do_increment(const unsigned int k)
   {
-    const double       time       = parameters.load_history.time(k);
-    unsigned int       iterations = 0, reference_iterations = 0;
-    PlasticUpdate      plastic_update;
+    const double  time       = parameters.load_history.time(k);
+    unsigned int  iterations = 0, reference_iterations = 0;
+    PlasticUpdate plastic_update;
+    // Before the solve: its step halvings and progress lines belong to it.
+    if (!trial_run)
+      print_stage(k);
+    if (contact)
+      contact->start_progress(k);
+    increment_contact_seconds = 0.;
     const unsigned int plastic_iterations =
       solve_increment(k, iterations, reference_iterations, plastic_update);
     for (const auto &block : blocks)
@@ -524,10 +530,7 @@ namespace mbfem
                     earlier_results()));
 
     if (!trial_run)
-      {
-        print_stage(k);
-        print_increment(k, time, iterations);
-      }
+      print_increment(k, time, iterations);
     if (parameters.plasticity.enabled)
       print_plasticity(plastic_iterations, plastic_update);
     if (reference)
@@ -611,7 +614,8 @@ namespace mbfem
       return "";
     const std::string stem = problem_stem(k, "failed-");
     contact->condensed_problem(k, time, false).write(stem);
-    return "    The increment's contact problem, from its start, is in " +
+    return "    The increment's contact problem, from the start of the step "
+           "that failed, is in " +
            stem + ".json (doc/contact_problems.md).\n";
   }
 
@@ -992,6 +996,7 @@ namespace mbfem
           Timer              clock;
           iterations = contact->solve_increment(blocks, k, from_last_solve);
           last_contact_seconds = clock.wall_time();
+          increment_contact_seconds += last_contact_seconds;
           (condensed ? condensed_seconds : monolithic_seconds) +=
             last_contact_seconds;
         }
@@ -1396,7 +1401,7 @@ namespace mbfem
                   max_gap,
                   max_slip(*contact),
                   max_p,
-                  last_contact_seconds);
+                  increment_contact_seconds);
     summary_csv += buffer;
     // Which method concluded the state iteration, and its share of the
     // iterations (doc/state_iteration.md).
@@ -1471,7 +1476,7 @@ namespace mbfem
                 << to_string(contact->last_method()) << " "
                 << contact->last_iterations().second << ")";
         if (!parameters.run.test_mode)
-          pcout << " in " << std::setprecision(3) << last_contact_seconds
+          pcout << " in " << std::setprecision(3) << increment_contact_seconds
                 << " s" << std::setprecision(6);
         pcout << ", stick/slip/open " << contact->count(ContactState::stick)
               << "/" << contact->count(ContactState::slip) << "/"

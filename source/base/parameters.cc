@@ -112,6 +112,13 @@ namespace mbfem
                            "neither the load path nor the Newton method, "
                            "so near the limit it would decide F, not the "
                            "model. Set 'Contact/Formulation = condensed'."));
+    AssertThrow(!output.write_contact_problems ||
+                  contact.formulation !=
+                    ContactParameters::Formulation::monolithic,
+                ExcMessage("Output/Write contact problems writes the "
+                           "condensed problem, which the monolithic "
+                           "formulation does not form. Set "
+                           "'Contact/Formulation = condensed' or 'both'."));
     // Entries read only by strength reduction would be ignored silently.
     AssertThrow(run.mode == "strength reduction" ||
                   strength_reduction.closed_form_text.empty(),

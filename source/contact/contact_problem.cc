@@ -104,6 +104,13 @@ namespace mbfem
       << ",\n"
       << "  \"point\": "
       << field([&](const Pair &p) { return vector(p.point); }) << ",\n"
+      << "  \"frame\": " << field([&](const Pair &p) {
+           std::string text = "[";
+           for (unsigned int i = 0; i < dim; ++i)
+             text += (i > 0 ? ", " : "") + vector(p.frame[i]);
+           return text + "]";
+         })
+      << ",\n"
       << "  \"state\": "
       << field([](const Pair &p) { return "\"" + p.state + "\""; }) << ",\n"
       << "  \"broken\": "
@@ -185,14 +192,18 @@ namespace mbfem
         data.area         = pair.area;
         data.broken       = trial.broken[k];
         data.tensile_slip = trial.tensile_slip[k];
-        data.mu = data.tensile_slip ? 0. : pair.joint.friction_coefficient;
+        data.mu           = pair.joint.friction_coefficient;
+        data.frame        = pair.frame;
         data.cohesion = pair.joint.shear_strength(0., pair.area, data.broken);
         data.tension  = pair.joint.tensile_limit(pair.area, data.broken);
         data.tied     = pair.tied;
         for (unsigned int d = 0; d < dim; ++d)
           data.held[d] = held[k][d];
-        data.state               = to_string(trial.state[k]);
-        data.slip_direction      = trial.slip_direction[k];
+        data.state = to_string(trial.state[k]);
+        data.slip_direction =
+          (solved && solved_slip_direction.size() == n_pairs ?
+             solved_slip_direction[k] :
+             trial.slip_direction[k]);
         data.direction_stiffness = trial.direction_stiffness[k];
         problem.pairs.push_back(data);
       }

@@ -104,6 +104,15 @@ namespace mbfem
 
 
   template <int dim>
+  void
+  ContactSolver<dim>::start_progress(const unsigned int increment)
+  {
+    progress.start(increment);
+  }
+
+
+
+  template <int dim>
   std::string
   ContactSolver<dim>::count_states(const Trial &trial) const
   {
@@ -1187,7 +1196,6 @@ namespace mbfem
     const bool                                      from_last_solve)
   {
     set_increment_data(blocks);
-    progress.start(increment);
 
     // The fast iteration first: it concludes nearly every increment, in a
     // few solves. Its answer is refused where the states leave a
@@ -1362,9 +1370,13 @@ namespace mbfem
 
         if (signature(next) == signature(trial) && direction_change < 1e-6)
           {
+            // The directions the solve used, for condensed_problem(); the
+            // trial keeps the updated ones (the next increment's guess).
+            const auto solved    = trial.slip_direction;
             trial.slip_direction = next.slip_direction;
             accept(trial, solution, displacement);
-            outcome.converged = true;
+            solved_slip_direction = solved;
+            outcome.converged     = true;
             return outcome;
           }
         have_good           = true;
@@ -1407,8 +1419,9 @@ namespace mbfem
                              const Vector<double> &solution,
                              const Vector<double> &displacement)
   {
-    current          = trial;
-    current_solution = solution;
+    current               = trial;
+    current_solution      = solution;
+    solved_slip_direction = trial.slip_direction;
     current_displacement.assign(n_pairs, Tensor<1, dim>());
     for (unsigned int k = 0; k < n_pairs; ++k)
       for (unsigned int i = 0; i < dim; ++i)

@@ -330,10 +330,12 @@ namespace mbfem
     double       largest_slip_difference  = 0.;
     unsigned int state_differences        = 0;
     /** What this increment's comparison found, for the summary CSV. */
-    std::array<double, 4> last_comparison        = {{0., 0., 0., 0.}};
-    double                last_contact_seconds   = 0.;
-    double                last_reference_seconds = 0.;
-    std::string           summary_csv;
+    std::array<double, 4> last_comparison      = {{0., 0., 0., 0.}};
+    double                last_contact_seconds = 0.;
+    /** The contact time of all passes and steps of this increment. */
+    double      increment_contact_seconds = 0.;
+    double      last_reference_seconds    = 0.;
+    std::string summary_csv;
     /** The last increment whose results are on disk (none yet: -1). */
     int last_written_increment = -1;
   };

@@ -38,8 +38,10 @@ namespace mbfem
     {
       Point<dim> point;
       double     area = 0.;
-      /** Friction coefficient, 0 for a slip with r_N < 0 (tensile slip). */
+      /** The joint's friction coefficient (a tensile slip uses none). */
       double mu = 0.;
+      /** Rows: the normal, then the tangents (the global axes if tied). */
+      Tensor<2, dim> frame;
       /** c A and sigma_t A (forces), 0 once broken. */
       double                cohesion = 0., tension = 0.;
       bool                  broken = false, tensile_slip = false, tied = false;

@@ -174,6 +174,13 @@ namespace mbfem
     report_progress(std::ostream *out, const double seconds = 10.);
 
     /**
+     * The clock of the progress lines starts for increment @p increment:
+     * once per increment, whatever passes and steps it takes.
+     */
+    void
+    start_progress(const unsigned int increment);
+
+    /**
      * Back to the states before the first increment (no slip, nothing
      * broken), with every joint's strength divided by @p strength_factor
      * (JointLaw::reduced()): a trial of strength reduction. The
@@ -302,6 +309,12 @@ namespace mbfem
     count_states(const Trial &trial) const;
 
     StateProgress progress;
+
+    /**
+     * The slip directions of the system whose solution was accepted last
+     * (the fast iteration keeps the updated ones in current).
+     */
+    std::vector<Tensor<1, dim>> solved_slip_direction;
 
     /** The rows (Table 1) of every pair direction for @p trial. */
     std::vector<PairEquation<dim>>
