@@ -17,7 +17,7 @@ build_dir=${MBFEM_BUILD_DIR:-$source_dir/build}
 # check; COIN-OR Clp for the statics certificate's linear program; MUMPS's
 # C API for the block flexibilities; matplotlib for the default example's
 # figure; the compiler and build tools.
-packages="libdeal.ii-dev libmumps-dev libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format coinor-libclp-dev python3-matplotlib"
+packages="libdeal.ii-dev libmumps-dev libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format coinor-libclp-dev python3-matplotlib python3-scipy"
 
 missing=""
 for package in $packages; do

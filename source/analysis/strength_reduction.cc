@@ -321,14 +321,17 @@ namespace mbfem
     if (std::isfinite(guess) && std::isfinite(bound) && guess < bound)
       line << "\n  limit equilibrium along the statics limit's mechanism: "
            << guess << " (the search's first guess)";
-    // Where the state iteration gave up, the model may hold more: say so.
+    // Where the state iteration gave up, the model may hold more (or the
+    // elastic model may have no equilibrium there): say so.
     for (const auto &trial : trial_list)
       if (trial.factor == hi &&
           trial.outcome == StrengthTrial::Outcome::not_converged)
         line << "\n  F is a lower bound: at F = " << hi
-             << " the state iteration gave up although statics admits "
-                "forces (exit code 3 of a plain run), a failure of the "
-                "solver, not a proof that the model fails there";
+             << " the state iteration gave up although rigid-block "
+                "statics admits forces (exit code 3 of a plain run); "
+                "either the solver failed there or the elastic model has "
+                "no equilibrium (statics cannot tell where the joint "
+                "opens)";
     return line.str();
   }
 
