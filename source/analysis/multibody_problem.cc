@@ -768,9 +768,12 @@ namespace mbfem
           else
             why = "    Statics and limit equilibrium along the mechanism "
                   "both admit forces with these joint strengths, and the "
-                  "state iteration found no equilibrium: most likely a "
-                  "failure of the iteration, not of the model (statics "
-                  "cannot prove that the elastic model has a solution).";
+                  "state iteration found no equilibrium: a failure of the "
+                  "iteration, or of the elastic model where it opens "
+                  "joints whose cohesion rigid-block statics counts "
+                  "(statics cannot prove that the elastic model has a "
+                  "solution; doc/contact_problems.md says how to check the "
+                  "increment's problem).";
           throw Exceptions::ExcNotConvergedButAdmissible(text.str() + why);
         }
       throw Exceptions::ExcIncrementNotConverged(text.str());
