@@ -41,24 +41,6 @@ namespace mbfem
 
 
 
-  std::string
-  to_string(const StateMethod method)
-  {
-    switch (method)
-      {
-        case StateMethod::fast:
-          return "fast";
-        case StateMethod::load_path:
-          return "load path";
-        case StateMethod::semismooth_newton:
-          return "semismooth Newton";
-        default:
-          return "load continuation";
-      }
-  }
-
-
-
   template <int dim>
   ContactSolver<dim>::ContactSolver(
     std::vector<ContactPair<dim>>        pairs,
@@ -1189,6 +1171,16 @@ namespace mbfem
 
 
   template <int dim>
+  void
+  ContactSolver<dim>::set_state_methods(const std::vector<StateMethod> &methods)
+  {
+    Assert(!methods.empty(), ExcInternalError());
+    state_methods = methods;
+  }
+
+
+
+  template <int dim>
   unsigned int
   ContactSolver<dim>::solve_increment(
     const std::vector<std::unique_ptr<Block<dim>>> &blocks,
@@ -1197,86 +1189,146 @@ namespace mbfem
   {
     set_increment_data(blocks);
 
-    // The fast iteration first: it concludes nearly every increment, in a
-    // few solves. Its answer is refused where the states leave a
-    // mechanism (every pair that could resist a rigid motion slips): such
-    // an equilibrium exists only exactly at a limit, and in 3D the
-    // linearised slip direction can make the system regular with an
-    // unbounded slip instead.
-    method        = StateMethod::fast;
-    path_switches = 0;
-    const auto fast =
-      fast_iteration(from_last_solve ? current : committed, increment);
-    fast_iterations = fast.iterations;
-    if (fast.converged && (monolithic || mechanism(current).empty()))
-      return fast_iterations;
-    // The load path needs C_hat and P_hat, which only the condensed
-    // formulation has.
-    if (monolithic && fast.no_equilibrium)
-      AssertThrow(false, Exceptions::ExcNoEquilibrium(fast.failure));
-    AssertThrow(!monolithic,
-                Exceptions::ExcIncrementNotConverged(fast.failure));
-    method = StateMethod::load_path;
-    try
+    // The methods in their order until one concludes (by default the fast
+    // iteration, which concludes nearly every increment in a few solves,
+    // then the load path, the semismooth Newton method and the load
+    // continuation). The verdict where none does: "no equilibrium" if a
+    // method met one (the last such), else the last failure of the fast
+    // iteration or the load path, else the others'.
+    // The monolithic formulation has the fast iteration only: the others
+    // need C_hat and P_hat.
+    const std::vector<StateMethod> methods =
+      monolithic ? std::vector<StateMethod>{StateMethod::fast} : state_methods;
+    method          = methods.front();
+    fast_iterations = 0;
+    path_switches   = 0;
+    MethodOutcome verdict;
+    bool          verdict_is_primary = false;
+    for (const StateMethod m : methods)
       {
-        path_switches = load_path(increment);
+        const MethodOutcome outcome = run_method(m, increment, from_last_solve);
+        if (m == StateMethod::fast)
+          fast_iterations = outcome.iterations;
+        if (outcome.converged)
+          {
+            method        = m;
+            path_switches = (m == StateMethod::fast ? 0 : outcome.iterations);
+            return fast_iterations + path_switches;
+          }
+        const bool primary =
+          m == StateMethod::fast || m == StateMethod::load_path;
+        if (outcome.no_equilibrium ||
+            (!verdict.no_equilibrium && (primary || !verdict_is_primary)))
+          {
+            verdict            = outcome;
+            verdict_is_primary = verdict_is_primary || primary;
+          }
       }
-    catch (const Exceptions::ExcIncrementNotConverged &)
-      {
-        // The path did not conclude (in 3D it can pivot in a cycle at one
-        // load; from zero load every event is at s = 0+). The semismooth
-        // Newton method next; if it fails too, where the fast iteration had
-        // met a singular trial, its verdict stands, as before the path
-        // existed.
-        if (rescued(increment))
-          return fast_iterations + path_switches;
-        AssertThrow(!fast.no_equilibrium,
-                    Exceptions::ExcNoEquilibrium(fast.failure));
-        throw;
-      }
-    catch (const Exceptions::ExcNoEquilibrium &)
-      {
-        // The path stopped at a mechanism: below a limit it can take a
-        // branch that ends there (doc/state_iteration.md); the Newton
-        // method looks for the solution, and the verdict stands if it
-        // finds none.
-        if (rescued(increment))
-          return fast_iterations + path_switches;
-        throw;
-      }
-    return fast_iterations + path_switches;
+    AssertThrow(!verdict.no_equilibrium,
+                Exceptions::ExcNoEquilibrium(verdict.failure));
+    AssertThrow(false, Exceptions::ExcIncrementNotConverged(verdict.failure));
+    return 0;
   }
 
 
 
   template <int dim>
-  bool
-  ContactSolver<dim>::rescued(const unsigned int increment)
+  typename ContactSolver<dim>::MethodOutcome
+  ContactSolver<dim>::run_method(const StateMethod  m,
+                                 const unsigned int increment,
+                                 const bool         from_last_solve)
   {
-    // The path may have stopped part way: back to the increment's load.
-    // A failed attempt leaves the current states (and broken joints) as
-    // the load path left them, which the certificate then reads.
+    MethodOutcome     outcome;
+    const std::string head = "Load increment " + std::to_string(increment);
+    if (m == StateMethod::fast)
+      {
+        // Its answer is refused where the states leave a mechanism (every
+        // pair that could resist a rigid motion slips): such an equilibrium
+        // exists only exactly at a limit, and in 3D the linearised slip
+        // direction can make the system regular with an unbounded slip
+        // instead.
+        const auto fast =
+          fast_iteration(from_last_solve ? current : committed, increment);
+        outcome.iterations = fast.iterations;
+        outcome.converged =
+          fast.converged && (monolithic || mechanism(current).empty());
+        outcome.no_equilibrium = fast.no_equilibrium;
+        outcome.failure        = fast.failure;
+        if (fast.converged && !outcome.converged)
+          outcome.failure = head +
+                            ": the fast iteration's states leave a "
+                            "mechanism:" +
+                            mechanism(current);
+        return outcome;
+      }
+    if (m == StateMethod::load_path)
+      return run_load_path(increment);
+
+    // The semismooth Newton method and the load continuation: where they
+    // fail, the states stay as the methods before them left them. The
+    // continuation scales the increment's load from the path's start (set
+    // again, as the same, if the path ran).
+    set_path_start();
     set_load_fraction(1.);
     const Trial                       trial        = current;
     const Vector<double>              solution     = current_solution;
     const std::vector<Tensor<1, dim>> displacement = current_displacement;
-    unsigned int newton_iterations = 0, continuation_iterations = 0;
-    if (semismooth_newton(increment, newton_iterations))
+    if (m == StateMethod::semismooth_newton)
       {
-        method        = StateMethod::semismooth_newton;
-        path_switches = newton_iterations;
-        return true;
+        outcome.converged = semismooth_newton(increment, outcome.iterations);
+        outcome.failure   = head + ": the semismooth Newton method did not "
+                                   "converge.";
       }
-    if (load_continuation(increment, continuation_iterations))
+    else
       {
-        method        = StateMethod::load_continuation;
-        path_switches = continuation_iterations;
-        return true;
+        outcome.converged = load_continuation(increment, outcome.iterations);
+        outcome.failure   = head + ": the load continuation did not "
+                                   "conclude.";
       }
-    current              = trial;
-    current_solution     = solution;
-    current_displacement = displacement;
-    return false;
+    if (!outcome.converged)
+      {
+        current              = trial;
+        current_solution     = solution;
+        current_displacement = displacement;
+      }
+    return outcome;
+  }
+
+
+
+  template <int dim>
+  typename ContactSolver<dim>::MethodOutcome
+  ContactSolver<dim>::run_load_path(const unsigned int increment)
+  {
+    // The path did not conclude where it throws: in 3D it can pivot in a
+    // cycle at one load, from zero load every event is at s = 0+, or it
+    // stops at a mechanism (below a limit it can take a branch that ends
+    // there, doc/state_iteration.md). It may stop part way: the next
+    // method starts from the increment's full load.
+    MethodOutcome outcome;
+    const auto    text_of = [](const ExceptionBase &e) {
+      std::string text = message_of(e);
+      return text.substr(0, text.find_last_not_of(" \n") + 1);
+    };
+    path_switches = 0;
+    try
+      {
+        outcome.iterations = load_path(increment);
+        outcome.converged  = true;
+      }
+    catch (const Exceptions::ExcIncrementNotConverged &e)
+      {
+        outcome.iterations = path_switches;
+        outcome.failure    = text_of(e);
+      }
+    catch (const Exceptions::ExcNoEquilibrium &e)
+      {
+        outcome.iterations     = path_switches;
+        outcome.no_equilibrium = true;
+        outcome.failure        = text_of(e);
+      }
+    set_load_fraction(1.);
+    return outcome;
   }
 
 

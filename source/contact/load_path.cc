@@ -525,6 +525,7 @@ namespace mbfem
                 if (n == 0 && close_along(trial, free_motion, gap))
                   n = 1;
                 switches += n;
+                path_switches = switches; // the count, should it throw
                 if (n > 0 && seen_here.insert(signature(trial)).second &&
                     switches <= max_switches)
                   continue;
@@ -545,7 +546,7 @@ namespace mbfem
             gap[k] = contact_pairs[k].initial_gap + d[0];
           }
         switch_state(trial, segment, event);
-        ++switches;
+        path_switches = ++switches;
         AssertThrow(seen_here.insert(signature(trial)).second &&
                       switches <= max_switches,
                     Exceptions::ExcIncrementNotConverged(

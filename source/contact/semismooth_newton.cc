@@ -1,7 +1,6 @@
 #include <mbfem/base/exceptions.h>
 #include <mbfem/contact/contact_solver.h>
-
-#include <deal.II/lac/lapack_full_matrix.h>
+#include <mbfem/contact/newton_jacobian.h>
 
 #include <algorithm>
 #include <array>
@@ -19,12 +18,12 @@
 //   floating blocks: P^T r + F_e = 0,
 //
 // solved by Newton's method on its generalised Jacobian with a
-// backtracking line search. In 3D the slip direction is part of the
-// projection, so it may turn freely within the increment (which the load
-// path, holding it over a segment, cannot follow). Its answer gives the
-// states, which the fast iteration then solves and checks, so that the
-// result is the same discrete problem, with the same tolerances, as the
-// other two methods'.
+// backtracking line search, its Jacobian sparse (NewtonJacobian). In 3D the
+// slip direction is part of the projection, so it may turn freely within the
+// increment (which the load path, holding it over a segment, cannot follow).
+// Its answer gives the states, which the fast iteration then solves and checks,
+// so that the result is the same discrete problem, with the same tolerances, as
+// the other two methods'.
 
 namespace mbfem
 {
@@ -67,41 +66,25 @@ namespace mbfem
 
 
 
-  namespace
-  {
-    /**
-     * Whether every entry of @p v is finite: a nearly singular Jacobian can
-     * give a step of NaNs (checked entry by entry, as deal.II's norms
-     * assert finiteness in Debug).
-     */
-    bool
-    all_finite(const Vector<double> &v)
-    {
-      return std::all_of(v.begin(), v.end(), [](const double x) {
-        return std::isfinite(x);
-      });
-    }
-  } // namespace
-
-
-
   template <int dim>
   struct ContactSolver<dim>::NewtonSystem
   {
-    /** d = Delta_F + A u, u = (rho * scale, alpha): rows of [C_hat / scale,
-     * P_hat]. */
-    FullMatrix<double> A;
+    /** d = Delta_F + A u, u = (rho * scale, alpha): A's rows are those of
+     * [C_hat / scale, P_hat]; and the Jacobian. */
+    NewtonJacobian linear;
+    /** P_hat's column of each floating mode, as (row, value). */
+    std::vector<NewtonJacobian::Row> coupling_column;
     /** Pairs broken before or during this increment (history). */
     std::vector<bool> broken;
     Vector<double>    u, d, residual;
-    /** The Jacobian, if asked for. */
-    LAPACKFullMatrix<double> *jacobian = nullptr;
+    /** Whether newton_residual() assembles the Jacobian too. */
+    bool assemble = false;
 
     void
     add_unit(const unsigned int row, const unsigned int column, const double c)
     {
-      if (jacobian != nullptr)
-        (*jacobian)(row, column) += c;
+      if (assemble)
+        linear.add(row, column, c);
     }
 
     /** The Jacobian's row += c times the derivative of d(source). */
@@ -110,9 +93,8 @@ namespace mbfem
                      const unsigned int source,
                      const double       c)
     {
-      if (jacobian != nullptr)
-        for (unsigned int j = 0; j < A.n(); ++j)
-          (*jacobian)(row, j) += c * A(source, j);
+      if (assemble)
+        linear.add_row_of_a(row, source, c);
     }
   };
 
@@ -277,23 +259,22 @@ namespace mbfem
   ContactSolver<dim>::newton_residual(NewtonSystem &system) const
   {
     const unsigned int n_r = n_pairs * dim;
-    system.d               = external_displacement;
+    system.linear.multiply(system.u, system.d);
     for (unsigned int i = 0; i < n_r; ++i)
-      for (unsigned int j = 0; j < system.A.n(); ++j)
-        system.d(i) += system.A(i, j) * system.u(j);
+      system.d(i) += external_displacement(i);
     system.residual.reinit(n_r + n_alpha_total);
-    if (system.jacobian != nullptr)
-      system.jacobian->reinit(n_r + n_alpha_total, n_r + n_alpha_total);
+    if (system.assemble)
+      system.linear.clear_jacobian();
     for (unsigned int k = 0; k < n_pairs; ++k)
       newton_pair_residual(k, system);
     // The floating blocks' equilibrium, P^T r + F_e = 0, times scale.
     for (unsigned int a = 0; a < n_alpha_total; ++a)
       {
         double value = flexibility_scale * external_resultant[a];
-        for (unsigned int j = 0; j < n_r; ++j)
+        for (const auto &[j, c] : system.coupling_column[a])
           {
-            value += coupling(j, a) * system.u(j);
-            system.add_unit(n_r + a, j, coupling(j, a));
+            value += c * system.u(j);
+            system.add_unit(n_r + a, j, c);
           }
         system.residual(n_r + a) = value;
       }
@@ -318,13 +299,12 @@ namespace mbfem
     for (const auto &pair : contact_pairs)
       reference = std::max(reference, pair.initial_gap);
 
-    LAPACKFullMatrix<double> jacobian;
-    double                   damping = internal::initial_damping;
+    double damping = internal::initial_damping;
     for (unsigned int it = 0; it < internal::newton_max_iterations; ++it)
       {
-        system.jacobian    = &jacobian;
+        system.assemble    = true;
         const double merit = newton_residual(system);
-        system.jacobian    = nullptr;
+        system.assemble    = false;
         if (system.residual.linfty_norm() <=
             internal::newton_tolerance * reference)
           return true;
@@ -332,11 +312,10 @@ namespace mbfem
         // Newton's step where it decreases 1/2 |F|^2 (with backtracking,
         // and no longer than the trust length), else Levenberg and
         // Marquardt's, which always can.
-        const LAPACKFullMatrix<double> copy = jacobian;
-        const double                   trust =
+        const double trust =
           internal::trust_factor * std::max(reference, system.u.linfty_norm());
-        if (!newton_line_search(system, jacobian, merit, trust) &&
-            !levenberg_marquardt_step(system, copy, merit, damping))
+        if (!newton_line_search(system, merit, trust) &&
+            !levenberg_marquardt_step(system, merit, damping))
           return false;
       }
     return false;
@@ -346,23 +325,14 @@ namespace mbfem
 
   template <int dim>
   bool
-  ContactSolver<dim>::newton_line_search(NewtonSystem             &system,
-                                         LAPACKFullMatrix<double> &jacobian,
-                                         const double              merit,
-                                         const double              trust) const
+  ContactSolver<dim>::newton_line_search(NewtonSystem &system,
+                                         const double  merit,
+                                         const double  trust) const
   {
+    // A nearly singular Jacobian can give a step of NaNs: solve() says so.
     Vector<double> step(system.residual);
     step *= -1.;
-    try
-      {
-        jacobian.compute_lu_factorization();
-      }
-    catch (const LACExceptions::ExcSingular &)
-      {
-        return false;
-      }
-    jacobian.solve(step);
-    if (!all_finite(step))
+    if (!system.linear.solve(step))
       return false;
     // Armijo's test for the step taken, t times the (cut) Newton step:
     // the decrease predicted by the linearisation is 2 t cut merit.
@@ -389,38 +359,19 @@ namespace mbfem
 
   template <int dim>
   bool
-  ContactSolver<dim>::levenberg_marquardt_step(
-    NewtonSystem                   &system,
-    const LAPACKFullMatrix<double> &jacobian,
-    const double                    merit,
-    double                         &damping) const
+  ContactSolver<dim>::levenberg_marquardt_step(NewtonSystem &system,
+                                               const double  merit,
+                                               double       &damping) const
   {
     // (J^T J + lambda diag(J^T J)) step = -J^T F, lambda raised tenfold
     // until the merit decreases and lowered after a success.
-    const unsigned int       n = system.u.size();
-    LAPACKFullMatrix<double> normal(n, n);
-    jacobian.Tmmult(normal, jacobian);
-    Vector<double> gradient(n);
-    jacobian.Tvmult(gradient, system.residual);
-    const Vector<double> start = system.u;
+    // F at the start: newton_residual() overwrites system.residual with
+    // that of each rejected try.
+    const Vector<double> start = system.u, residual = system.residual;
     for (unsigned int attempt = 0; attempt < internal::max_halvings; ++attempt)
       {
-        LAPACKFullMatrix<double> matrix = normal;
-        for (unsigned int i = 0; i < n; ++i)
-          matrix(i, i) += damping * std::max(normal(i, i), 1e-300);
-        Vector<double> step(gradient);
-        step *= -1.;
-        bool solved = true;
-        try
-          {
-            matrix.compute_lu_factorization();
-            matrix.solve(step);
-          }
-        catch (const LACExceptions::ExcSingular &)
-          {
-            solved = false;
-          }
-        if (solved && all_finite(step))
+        Vector<double> step;
+        if (system.linear.damped_least_squares(residual, damping, step))
           {
             system.u = start;
             system.u += step;
@@ -543,6 +494,51 @@ namespace mbfem
 
 
   template <int dim>
+  void
+  ContactSolver<dim>::set_newton_matrix(NewtonSystem &system) const
+  {
+    // A's rows: C_hat / scale where two pairs share a block (H_b of each
+    // block they share), and P_hat of the pair's blocks' modes.
+    const unsigned int               n_r = n_pairs * dim;
+    std::vector<NewtonJacobian::Row> rows(n_r);
+    system.coupling_column.assign(n_alpha_total, {});
+    std::vector<int> entry_of(n_r + n_alpha_total, -1);
+    for (unsigned int i = 0; i < n_r; ++i)
+      {
+        auto &row = rows[i];
+        for (const auto &[b, s] : pair_sides[i / dim])
+          {
+            const BlockFlexibility &flexibility = block_flexibility[b];
+            for (unsigned int t = 0; t < flexibility.pairs.size(); ++t)
+              for (unsigned int f = 0; f < dim; ++f)
+                {
+                  const unsigned int column = flexibility.pairs[t] * dim + f;
+                  const double       value =
+                    flexibility.matrix(s * dim + i % dim, t * dim + f) /
+                    flexibility_scale;
+                  if (entry_of[column] < 0)
+                    {
+                      entry_of[column] = row.size();
+                      row.emplace_back(column, 0.);
+                    }
+                  row[entry_of[column]].second += value;
+                }
+          }
+        for (unsigned int a = 0; a < n_alpha_total; ++a)
+          if (coupling(i, a) != 0.)
+            {
+              row.emplace_back(n_r + a, coupling(i, a));
+              system.coupling_column[a].emplace_back(i, coupling(i, a));
+            }
+        for (const auto &[column, value] : row)
+          entry_of[column] = -1;
+      }
+    system.linear.reinit(rows, n_r + n_alpha_total, dim);
+  }
+
+
+
+  template <int dim>
   bool
   ContactSolver<dim>::semismooth_newton(const unsigned int increment,
                                         unsigned int      &iterations)
@@ -551,14 +547,7 @@ namespace mbfem
     const unsigned int n   = n_r + n_alpha_total;
     NewtonSystem       system;
     system.broken = committed.broken;
-    system.A.reinit(n_r, n);
-    for (unsigned int i = 0; i < n_r; ++i)
-      {
-        for (unsigned int j = 0; j < n_r; ++j)
-          system.A(i, j) = flexibility_entry(i, j) / flexibility_scale;
-        for (unsigned int a = 0; a < n_alpha_total; ++a)
-          system.A(i, n_r + a) = coupling(i, a);
-      }
+    set_newton_matrix(system);
     // From the increment's bonded answer (every pair stuck), where it
     // exists: Newton is local, and from the unloaded state it can end at
     // an indeterminate answer, every pair slipping around a spinning

@@ -128,8 +128,26 @@ namespace mbfem
         "pays when many blocks each touch a few neighbours (walls, jointed "
         "rock). auto: sparse when the system has at least 1000 unknowns "
         "and at most a tenth of its entries can be non-zero, else dense. "
-        "(The semismooth Newton method, tried where the state iteration "
-        "and the load path fail, still factorises its Jacobian dense.)");
+        "(The semismooth Newton method factorises its Jacobian sparse "
+        "always.)");
+      prm.declare_entry(
+        "State method",
+        "fast, load path, semismooth Newton, load continuation",
+        Patterns::List(Patterns::Selection(state_method_names()), 1, 4),
+        "The methods of each increment's state iteration, tried in this "
+        "order until one concludes (doc/state_iteration.md). fast: assume "
+        "states, solve, check, switch every pair that fails its check. "
+        "load path: the increment's load applied in a continuous fraction, "
+        "one pair switching where its condition fails (condensed only). "
+        "semismooth Newton: the increment as one nonsmooth system with a "
+        "sparse Jacobian, its states then checked by a fast solve "
+        "(condensed only). load continuation: the fast iteration at ten "
+        "times the increment's load, then back to it in steps (condensed "
+        "only). The monolithic formulation runs the fast iteration only. "
+        "Where none concludes, the verdict is that of the fast iteration "
+        "or the load path (no equilibrium if one met it). The order "
+        "matters where an increment has more than one solution: each "
+        "method may find another (doc/state_iteration.md).");
     }
 
     /** Contact/Exact traction: 2D tractions to measure the pairs' against. */
@@ -276,9 +294,10 @@ namespace mbfem
       search_distance          = prm.get_double("Search distance");
       max_iterations           = prm.get_integer("Maximum iterations");
       const std::string choice = prm.get("Formulation");
-      formulation = (choice == "monolithic" ? Formulation::monolithic :
-                     choice == "both"       ? Formulation::both :
-                                              Formulation::condensed);
+      formulation   = (choice == "monolithic" ? Formulation::monolithic :
+                       choice == "both"       ? Formulation::both :
+                                                Formulation::condensed);
+      state_methods = parse_state_methods(prm.get("State method"));
       const std::string system = prm.get("State system");
       state_system             = (system == "dense"  ? StateSystem::dense :
                                   system == "sparse" ? StateSystem::sparse :

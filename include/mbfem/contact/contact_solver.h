@@ -4,6 +4,7 @@
 #include <mbfem/block/block.h>
 #include <mbfem/contact/contact_problem.h>
 #include <mbfem/contact/monolithic_system.h>
+#include <mbfem/contact/state_method.h>
 #include <mbfem/contact/static_admissibility.h>
 #include <mbfem/interface/contact_interface.h>
 #include <mbfem/interface/pair_equation.h>
@@ -49,33 +50,6 @@ namespace mbfem
 
   std::string
   to_string(const ContactFormulation formulation);
-
-  /**
-   * Which method concluded an increment's state iteration (see
-   * doc/state_iteration.md): the fixed-point active-set iteration (assume
-   * states, solve, check, switch), or, where it cycles, runs out of
-   * iterations, or meets a trial that leaves a block unsupported, the load
-   * path: the increment's load applied from the last converged state in a
-   * continuous parameter s in [0, 1], switching the state of one pair
-   * exactly where its condition fails, which ends at s = 1 with the
-   * solution or at a mechanism with the fraction of the increment it
-   * reached. Where both fail, the semismooth Newton method: the increment
-   * as one nonsmooth system (Alart and Curnier's projections for the joint
-   * law), whose answer gives the states that the fast iteration then
-   * solves and checks. Where that fails too, the load continuation: the
-   * fast iteration at ten times the increment's load, then back to it in
-   * steps, each from the states of the last.
-   */
-  enum class StateMethod : unsigned char
-  {
-    fast,
-    load_path,
-    semismooth_newton,
-    load_continuation
-  };
-
-  std::string
-  to_string(const StateMethod method);
 
   /**
    * A progress line for a long state iteration: at most one every
@@ -161,6 +135,14 @@ namespace mbfem
     solve_increment(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
                     const unsigned int                              increment,
                     const bool from_last_solve = false);
+
+    /**
+     * The methods of the state iteration, in the order solve_increment()
+     * tries them ('Contact/State method'). The monolithic formulation has
+     * the fast iteration only: the others need C_hat and P_hat.
+     */
+    void
+    set_state_methods(const std::vector<StateMethod> &methods);
 
     /** Accepts the converged increment as the start of the next one. */
     void
@@ -284,8 +266,9 @@ namespace mbfem
 
     /**
      * The state iterations of the last solve_increment(): those of the fast
-     * iteration, and the switches of the load path (0 if the fast
-     * iteration concluded); solve_increment() returns their sum.
+     * iteration, and those of the method that concluded if another did (0
+     * if the fast iteration concluded); solve_increment() returns their
+     * sum (the iterations of a method that failed before are not counted).
      */
     std::pair<unsigned int, unsigned int>
     last_iterations() const;
@@ -543,17 +526,34 @@ namespace mbfem
     void
     set_increment_data(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
 
+    /** One method's attempt at an increment. */
+    struct MethodOutcome
+    {
+      bool         converged      = false;
+      bool         no_equilibrium = false; // its verdict: no equilibrium
+      unsigned int iterations     = 0;
+      std::string  failure;
+    };
+
     /**
-     * solve_increment() where the load path failed: the semismooth Newton
-     * method at the increment's full load, then the load continuation;
-     * true if one concluded (method says which).
+     * Runs @p method on the increment. Where the semismooth Newton method
+     * or the load continuation fails, the current states are those before
+     * it (which the certificate then reads); the fast iteration and the
+     * load path leave theirs.
      */
-    bool
-    rescued(const unsigned int increment);
+    MethodOutcome
+    run_method(const StateMethod  method,
+               const unsigned int increment,
+               const bool         from_last_solve);
+
+    /** run_method() for the load path, its exceptions as outcomes. */
+    MethodOutcome
+    run_load_path(const unsigned int increment);
 
     /**
      * The semismooth Newton method (source/contact/semismooth_newton.cc),
-     * where the fast iteration and the load path both failed: true if it
+     * by default where the fast iteration and the load path both failed
+     * ('Contact/State method' sets the order): true if it
      * found the increment's solution, which is then current; adds its
      * Newton steps and the polishing fast iteration's to @p iterations.
      */
@@ -609,17 +609,23 @@ namespace mbfem
      * Jacobian is singular or no length decreases 1/2 |F|^2.
      */
     bool
-    newton_line_search(NewtonSystem             &system,
-                       LAPACKFullMatrix<double> &jacobian,
-                       const double              merit,
-                       const double              trust) const;
+    newton_line_search(NewtonSystem &system,
+                       const double  merit,
+                       const double  trust) const;
+
+    /**
+     * The Newton system's A from the blocks' flexibilities and the
+     * rigid-mode coupling, sparse: a pair's row holds the pairs of its two
+     * blocks only.
+     */
+    void
+    set_newton_matrix(NewtonSystem &system) const;
 
     /** newton_solve()'s fallback step: Levenberg-Marquardt. */
     bool
-    levenberg_marquardt_step(NewtonSystem                   &system,
-                             const LAPACKFullMatrix<double> &jacobian,
-                             const double                    merit,
-                             double                         &damping) const;
+    levenberg_marquardt_step(NewtonSystem &system,
+                             const double  merit,
+                             double       &damping) const;
 
     /** The states (and slip directions) of the Newton answer. */
     Trial
@@ -870,8 +876,12 @@ namespace mbfem
     Vector<double>      full_displacement, start_displacement;
     std::vector<double> full_resultant, start_resultant;
 
-    StateMethod  method          = StateMethod::fast;
-    unsigned int fast_iterations = 0, path_switches = 0;
+    std::vector<StateMethod> state_methods   = {StateMethod::fast,
+                                                StateMethod::load_path,
+                                                StateMethod::semismooth_newton,
+                                                StateMethod::load_continuation};
+    StateMethod              method          = StateMethod::fast;
+    unsigned int             fast_iterations = 0, path_switches = 0;
   };
 } // namespace mbfem
 

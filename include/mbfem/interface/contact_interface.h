@@ -2,6 +2,7 @@
 #define mbfem_interface_contact_interface_h
 
 #include <mbfem/block/block.h>
+#include <mbfem/contact/state_method.h>
 #include <mbfem/interface/joint_law.h>
 #include <mbfem/interface/joint_sets.h>
 
@@ -85,6 +86,12 @@ namespace mbfem
       sparse
     };
     StateSystem state_system = StateSystem::automatic;
+
+    /** The methods of the state iteration, in the order tried. */
+    std::vector<StateMethod> state_methods = {StateMethod::fast,
+                                              StateMethod::load_path,
+                                              StateMethod::semismooth_newton,
+                                              StateMethod::load_continuation};
 
     /** Whether the condensed (multi-body) formulation runs. */
     bool
