@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <map>
 #include <numeric>
@@ -685,8 +686,26 @@ namespace mbfem
       column_of[unknowns[i]] = i;
 
     // The rows of assemble_condensed(), with C_hat's entries only where
-    // two pairs share a block (H_b of that block), in a map per row.
-    std::vector<std::map<unsigned int, double>> rows(n);
+    // two pairs share a block (H_b of that block), each gathered through
+    // entry_of (a row's entry of each column, -1 for none) in the order
+    // the terms come, so that every sum is that of the dense assembly.
+    std::vector<SparseRow> rows(n);
+    std::vector<int>       entry_of(n, -1);
+    const auto             add =
+      [&](SparseRow &row, const unsigned int column, const double value) {
+        if (entry_of[column] < 0)
+          {
+            entry_of[column] = row.size();
+            row.emplace_back(column, 0.);
+          }
+        row[entry_of[column]].second += value;
+      };
+    // P_hat's non-zero entries in the unknowns' rows.
+    std::vector<SparseRow> coupling_of(n_rho);
+    for (unsigned int j = 0; j < n_rho; ++j)
+      for (unsigned int a = 0; a < n_alpha_total; ++a)
+        if (coupling(unknowns[j], a) != 0.)
+          coupling_of[j].emplace_back(a, coupling(unknowns[j], a));
     for (unsigned int i = 0; i < n_rho; ++i)
       {
         const unsigned int       row       = unknowns[i];
@@ -698,26 +717,39 @@ namespace mbfem
             const double a = eq.displacement_coefficients[e];
             if (a != 0.)
               {
-                add_flexibility_row(k, e, row_scale * a, column_of, rows[i]);
+                add_flexibility_row(k,
+                                    e,
+                                    row_scale * a,
+                                    column_of,
+                                    [&](unsigned int c, double v) {
+                                      add(rows[i], c, v);
+                                    });
                 for (unsigned int b = 0; b < n_alpha_total; ++b)
                   if (coupling(k * dim + e, b) != 0.)
-                    rows[i][n_rho + b] +=
-                      row_scale * a * coupling(k * dim + e, b);
+                    add(rows[i],
+                        n_rho + b,
+                        row_scale * a * coupling(k * dim + e, b));
               }
             if (eq.force_coefficients[e] != 0. && column_of[k * dim + e] >= 0)
-              rows[i][column_of[k * dim + e]] += eq.force_coefficients[e];
+              add(rows[i], column_of[k * dim + e], eq.force_coefficients[e]);
           }
+        for (const auto &[column, value] : rows[i])
+          entry_of[column] = -1;
       }
     // Equilibrium of the floating blocks: P^T r = -F_e.
     for (unsigned int j = 0; j < n_rho; ++j)
-      for (unsigned int a = 0; a < n_alpha_total; ++a)
-        if (coupling(unknowns[j], a) != 0.)
-          rows[n_rho + a][j] = coupling(unknowns[j], a);
+      for (const auto &[a, value] : coupling_of[j])
+        rows[n_rho + a].emplace_back(j, value);
 
-    DynamicSparsityPattern dsp(n, n);
+    DynamicSparsityPattern               dsp(n, n);
+    std::vector<types::global_dof_index> columns;
     for (unsigned int i = 0; i < n; ++i)
-      for (const auto &[j, value] : rows[i])
-        dsp.add(i, j);
+      {
+        columns.clear();
+        for (const auto &[j, value] : rows[i])
+          columns.push_back(j);
+        dsp.add_entries(i, columns.begin(), columns.end());
+      }
     SparsityPattern pattern;
     pattern.copy_from(dsp);
     SparseMatrix<double> matrix(pattern);
@@ -745,11 +777,11 @@ namespace mbfem
   template <int dim>
   void
   ContactSolver<dim>::add_flexibility_row(
-    const unsigned int              k,
-    const unsigned int              e,
-    const double                    factor,
-    const std::vector<int>         &column_of,
-    std::map<unsigned int, double> &row) const
+    const unsigned int                                           k,
+    const unsigned int                                           e,
+    const double                                                 factor,
+    const std::vector<int>                                      &column_of,
+    const std::function<void(const unsigned int, const double)> &add) const
   {
     // (C_hat rho)_(k, e) / scale = sum over the blocks b of pair k's
     // sides s, and every side t on b: H_b(s e, t f) x_(t f) / scale.
@@ -761,9 +793,9 @@ namespace mbfem
             {
               const int column = column_of[flexibility.pairs[t] * dim + f];
               if (column >= 0)
-                row[column] += factor *
-                               flexibility.matrix(s * dim + e, t * dim + f) /
-                               flexibility_scale;
+                add(column,
+                    factor * flexibility.matrix(s * dim + e, t * dim + f) /
+                      flexibility_scale);
             }
       }
   }

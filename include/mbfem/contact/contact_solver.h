@@ -15,6 +15,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparse_direct.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -837,16 +838,21 @@ namespace mbfem
     assemble_condensed_sparse(const std::vector<PairEquation<dim>> &equations,
                               CondensedSystem &system) const;
 
+    /** A row of a sparse system: (column, value). */
+    using SparseRow = std::vector<std::pair<unsigned int, double>>;
+
     /**
-     * Adds @p factor times row (k, e) of C_hat / flexibility_scale to
-     * @p row, over the columns (@p column_of) of the unknowns.
+     * Calls @p add(column, value) with @p factor times row (k, e) of
+     * C_hat / flexibility_scale, over the columns (@p column_of) of the
+     * unknowns.
      */
     void
-    add_flexibility_row(const unsigned int              k,
-                        const unsigned int              e,
-                        const double                    factor,
-                        const std::vector<int>         &column_of,
-                        std::map<unsigned int, double> &row) const;
+    add_flexibility_row(
+      const unsigned int                                           k,
+      const unsigned int                                           e,
+      const double                                                 factor,
+      const std::vector<int>                                      &column_of,
+      const std::function<void(const unsigned int, const double)> &add) const;
 
     /** Sets system.regular from a condition estimate of the factorisation. */
     void
