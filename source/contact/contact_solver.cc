@@ -1238,12 +1238,12 @@ namespace mbfem
     bool          verdict_is_primary = false;
     for (const StateMethod m : methods)
       {
+        method = m; // the one running, for the progress line
         const MethodOutcome outcome = run_method(m, increment, from_last_solve);
         if (m == StateMethod::fast)
           fast_iterations = outcome.iterations;
         if (outcome.converged)
           {
-            method        = m;
             path_switches = (m == StateMethod::fast ? 0 : outcome.iterations);
             return fast_iterations + path_switches;
           }
