@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 
 // The semismooth Newton method of the contact state iteration
 // (doc/state_iteration.md, doc/decisions.md): the third method, tried where
@@ -503,27 +504,23 @@ namespace mbfem
     std::vector<NewtonJacobian::Row> rows(n_r);
     system.coupling_column.assign(n_alpha_total, {});
     std::vector<int> entry_of(n_r + n_alpha_total, -1);
+    std::vector<int> every_column(n_r);
+    std::iota(every_column.begin(), every_column.end(), 0);
     for (unsigned int i = 0; i < n_r; ++i)
       {
         auto &row = rows[i];
-        for (const auto &[b, s] : pair_sides[i / dim])
-          {
-            const BlockFlexibility &flexibility = block_flexibility[b];
-            for (unsigned int t = 0; t < flexibility.pairs.size(); ++t)
-              for (unsigned int f = 0; f < dim; ++f)
-                {
-                  const unsigned int column = flexibility.pairs[t] * dim + f;
-                  const double       value =
-                    flexibility.matrix(s * dim + i % dim, t * dim + f) /
-                    flexibility_scale;
-                  if (entry_of[column] < 0)
-                    {
-                      entry_of[column] = row.size();
-                      row.emplace_back(column, 0.);
-                    }
-                  row[entry_of[column]].second += value;
-                }
-          }
+        add_flexibility_row(i / dim,
+                            i % dim,
+                            1.,
+                            every_column,
+                            [&](const unsigned int column, const double value) {
+                              if (entry_of[column] < 0)
+                                {
+                                  entry_of[column] = row.size();
+                                  row.emplace_back(column, 0.);
+                                }
+                              row[entry_of[column]].second += value;
+                            });
         for (unsigned int a = 0; a < n_alpha_total; ++a)
           if (coupling(i, a) != 0.)
             {
