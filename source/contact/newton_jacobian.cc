@@ -172,12 +172,4 @@ namespace mbfem
       step(i) = x(n + i);
     return all_finite(step);
   }
-
-
-
-  std::size_t
-  NewtonJacobian::n_nonzero_elements() const
-  {
-    return pattern.n_nonzero_elements();
-  }
 } // namespace mbfem

@@ -82,10 +82,6 @@ namespace mbfem
                          const double          lambda,
                          Vector<double>       &step);
 
-    /** The non-zero entries of J, for the record. */
-    std::size_t
-    n_nonzero_elements() const;
-
   private:
     SparsityPattern      pattern;
     SparseMatrix<double> a_matrix, jacobian;
