@@ -160,22 +160,16 @@ namespace mbfem
     problem.increment  = increment;
     problem.time       = time;
     problem.n_pairs    = n_pairs;
-    problem.n_alpha    = n_alpha_total;
+    problem.n_alpha    = coupling.n_modes();
     const unsigned n_r = n_pairs * dim;
     // W = C_hat: the sum over the blocks two pairs share of H_b.
-    for (const auto &block : block_flexibility)
-      for (unsigned int s = 0; s < block.pairs.size(); ++s)
-        for (unsigned int t = 0; t < block.pairs.size(); ++t)
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              problem.W[{block.pairs[s] * dim + i, block.pairs[t] * dim + j}] +=
-                block.matrix(s * dim + i, t * dim + j);
-    problem.G.reinit(n_r, n_alpha_total);
+    condensed->add_entries(problem.W);
+    problem.G.reinit(n_r, coupling.n_modes());
     for (unsigned int i = 0; i < n_r; ++i)
-      for (unsigned int a = 0; a < n_alpha_total; ++a)
+      for (unsigned int a = 0; a < coupling.n_modes(); ++a)
         problem.G(i, a) = coupling(i, a);
-    problem.f = external_resultant;
-    problem.f.resize(n_alpha_total, 0.);
+    problem.f = loads.resultant;
+    problem.f.resize(coupling.n_modes(), 0.);
 
     // q: u_N is the gap g0 + d_N, u_T the increment d_T - d_T(committed).
     const Trial &trial = solved ? current : committed;
@@ -185,7 +179,7 @@ namespace mbfem
         const auto &pair = contact_pairs[k];
         for (unsigned int d = 0; d < dim; ++d)
           problem.q[k * dim + d] =
-            external_displacement(k * dim + d) +
+            loads.displacement(k * dim + d) +
             (d == 0 ? pair.initial_gap : -committed_displacement[k][d]);
         typename ContactProblem<dim>::Pair data;
         data.point        = pair.midpoint();
@@ -207,11 +201,11 @@ namespace mbfem
         data.direction_stiffness = trial.direction_stiffness[k];
         problem.pairs.push_back(data);
       }
-    if (solved && current_solution.size() == n_r + n_alpha_total)
+    if (solved && current_solution.size() == n_r + coupling.n_modes())
       {
         for (unsigned int i = 0; i < n_r; ++i)
           problem.r.push_back(current_solution(i));
-        for (unsigned int a = 0; a < n_alpha_total; ++a)
+        for (unsigned int a = 0; a < coupling.n_modes(); ++a)
           problem.alpha.push_back(current_solution(n_r + a));
         for (unsigned int k = 0; k < n_pairs; ++k)
           for (unsigned int d = 0; d < dim; ++d)

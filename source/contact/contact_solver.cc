@@ -53,10 +53,22 @@ namespace mbfem
     , max_iterations(max_iterations)
     , n_pairs(contact_pairs.size())
     , contact_formulation(formulation)
-    , state_system(state_system)
   {
     if (formulation == ContactFormulation::monolithic)
-      monolithic = std::make_unique<MonolithicSystem<dim>>(solver_package);
+      {
+        auto system_ = std::make_unique<MonolithicSystem<dim>>(contact_pairs,
+                                                               solver_package);
+        monolithic   = system_.get();
+        system       = std::move(system_);
+      }
+    else
+      {
+        auto system_ = std::make_unique<CondensedSystem<dim>>(contact_pairs,
+                                                              coupling,
+                                                              state_system);
+        condensed    = system_.get();
+        system       = std::move(system_);
+      }
     committed.state.resize(n_pairs);
     committed.broken.assign(n_pairs, false);
     committed.tensile_slip.assign(n_pairs, false);
@@ -164,221 +176,14 @@ namespace mbfem
 
 
 
-  namespace
-  {
-    /**
-     * H = S C S^T for a block: C its flexibility over its contact DoFs, S
-     * the (sides x dim) x (contact DoFs) map of signed, weighted nodes
-     * rotated into each side's pair frame (@p rows: per row of S, its
-     * (DoF index, coefficient) entries). Two sparse-times-dense passes;
-     * C is released after the first.
-     */
-    FullMatrix<double>
-    project(
-      FullMatrix<double>                                              &c,
-      const std::vector<std::vector<std::pair<unsigned int, double>>> &rows)
-    {
-      const unsigned int m = c.m(), n = rows.size();
-      // T = C S^T (m x n), then H = S T, both along contiguous rows.
-      FullMatrix<double> t(m, n);
-      for (unsigned int q = 0; q < m; ++q)
-        for (unsigned int r = 0; r < n; ++r)
-          {
-            double value = 0.;
-            for (const auto &[p, weight] : rows[r])
-              value += weight * c(q, p);
-            t(q, r) = value;
-          }
-      c.reinit(0, 0);
-      FullMatrix<double> h(n, n);
-      for (unsigned int r = 0; r < n; ++r)
-        for (const auto &[q, weight] : rows[r])
-          for (unsigned int s = 0; s < n; ++s)
-            h(r, s) += weight * t(q, s);
-      return h;
-    }
-  } // namespace
-
-
-
   template <int dim>
   void
   ContactSolver<dim>::setup(
     const std::vector<std::unique_ptr<Block<dim>>> &blocks)
   {
-    const unsigned int n_r = n_pairs * dim;
-
-    number_floating_modes(blocks);
-
-    // Per block: H_b (condensed) and the block's part of P.
-    block_flexibility.clear();
-    pair_sides.assign(n_pairs, {});
-    condensed_system = CondensedSystem();
-    FullMatrix<double> p_global(n_r, n_alpha_total);
-    for (unsigned int b = 0; b < blocks.size(); ++b)
-      add_block_flexibility(*blocks[b], b, p_global);
-
-    rotate_coupling(p_global);
-
-    if (monolithic)
-      {
-        monolithic->setup(blocks, contact_pairs);
-        held = monolithic->held();
-        return;
-      }
-
-    find_held_directions();
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::number_floating_modes(
-    const std::vector<std::unique_ptr<Block<dim>>> &blocks)
-  {
-    alpha_offset.assign(blocks.size(), 0);
-    n_alpha.assign(blocks.size(), 0);
-    n_alpha_total = 0;
-    block_names.clear();
-    mode_coefficients.clear();
-    for (unsigned int b = 0; b < blocks.size(); ++b)
-      {
-        alpha_offset[b] = n_alpha_total;
-        n_alpha[b]      = blocks[b]->floating_modes().size();
-        n_alpha_total += n_alpha[b];
-        block_names.push_back(blocks[b]->name());
-        mode_coefficients.push_back(blocks[b]->free_rigid_body_modes());
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::add_block_flexibility(Block<dim>         &block,
-                                            const unsigned int  b,
-                                            FullMatrix<double> &p_global)
-  {
-    // The pair sides on this block: (pair, sign); b gets +r, a gets -r.
-    std::vector<std::pair<unsigned int, double>>    sides;
-    std::vector<types::global_dof_index>            dofs;
-    std::map<types::global_dof_index, unsigned int> index_of;
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      for (const int sign : {-1, 1})
-        {
-          const auto &side = contact_pairs[k].side(sign);
-          if (side.block != b)
-            continue;
-          sides.emplace_back(k, sign);
-          for (const auto &node : side.nodes)
-            for (const auto dof : node.dofs)
-              if (index_of.emplace(dof, dofs.size()).second)
-                dofs.push_back(dof);
-        }
-    if (dofs.empty())
-      return;
-
-    const auto &modes = block.floating_modes();
-    // A side's displacement is sum_i w_i u(node_i), in its pair's
-    // frame: the rows of S (see project()) and P take the same weights.
-    std::vector<std::vector<std::pair<unsigned int, double>>> rows(
-      sides.size() * dim);
-    BlockFlexibility flexibility;
-    for (unsigned int s = 0; s < sides.size(); ++s)
-      {
-        const auto &[k, sign]       = sides[s];
-        const Tensor<2, dim> &frame = contact_pairs[k].frame;
-        flexibility.pairs.push_back(k);
-        pair_sides[k].emplace_back(block_flexibility.size(), s);
-        for (const auto &node : contact_pairs[k].side(sign).nodes)
-          {
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int c = 0; c < dim; ++c)
-                if (frame[i][c] != 0.)
-                  rows[s * dim + i].emplace_back(index_of[node.dofs[c]],
-                                                 sign * node.weight *
-                                                   frame[i][c]);
-            for (unsigned int a = 0; a < modes.size(); ++a)
-              for (unsigned int c = 0; c < dim; ++c)
-                p_global(k * dim + c, alpha_offset[b] + a) +=
-                  sign * node.weight * modes[a](node.dofs[c]);
-          }
-      }
-    // The monolithic system needs no flexibility; the free modes at
-    // the pairs (P) it still needs to name a block it cannot hold.
-    if (!monolithic)
-      {
-        FullMatrix<double> c_block = block.flexibility(dofs);
-        flexibility.matrix         = project(c_block, rows);
-      }
-    block_flexibility.push_back(std::move(flexibility));
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::rotate_coupling(const FullMatrix<double> &p_global)
-  {
-    const unsigned int n_r = n_pairs * dim;
-    // P into the pairs' frames.
-    coupling.reinit(n_r, n_alpha_total);
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int a = 0; a < n_alpha_total; ++a)
-          {
-            double value = 0.;
-            for (unsigned int c = 0; c < dim; ++c)
-              value += contact_pairs[k].frame[i][c] * p_global(k * dim + c, a);
-            coupling(k * dim + i, a) = value;
-          }
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::find_held_directions()
-  {
-    const unsigned int  n_r = n_pairs * dim;
-    std::vector<double> diagonal(n_r);
-    for (unsigned int i = 0; i < n_r; ++i)
-      diagonal[i] = flexibility_entry(i, i);
-    const double trace = std::accumulate(diagonal.begin(), diagonal.end(), 0.);
-    flexibility_scale  = (n_r > 0 && trace > 0. ? trace / n_r : 1.);
-
-    // A direction in which neither node can move (both on supports) carries
-    // no contact force: the supports take it.
-    const double max_diagonal =
-      n_r > 0 ? *std::max_element(diagonal.begin(), diagonal.end()) : 0.;
-    held.assign(n_pairs, std::array<bool, dim>());
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          double mobility = 0.;
-          for (unsigned int a = 0; a < n_alpha_total; ++a)
-            mobility = std::max(mobility, std::abs(coupling(k * dim + d, a)));
-          held[k][d] =
-            diagonal[k * dim + d] < 1e-12 * max_diagonal && mobility < 1e-12;
-        }
-  }
-
-
-
-  template <int dim>
-  double
-  ContactSolver<dim>::flexibility_entry(const unsigned int row,
-                                        const unsigned int column) const
-  {
-    const unsigned int k = row / dim, l = column / dim;
-    double             value = 0.;
-    for (const auto &[b, s] : pair_sides[k])
-      for (const auto &[c, t] : pair_sides[l])
-        if (b == c)
-          value += block_flexibility[b].matrix(s * dim + row % dim,
-                                               t * dim + column % dim);
-    return value;
+    coupling.setup(blocks, contact_pairs);
+    system->setup(blocks);
+    held = system->held();
   }
 
 
@@ -444,360 +249,11 @@ namespace mbfem
   {
     const std::vector<PairEquation<dim>> equations = pair_equations(trial);
     progress.step(to_string(method), count_states(trial));
-    if (monolithic)
-      {
-        // A block the states cannot hold makes the whole system singular;
-        // say so before a sparse LU returns noise.
-        if (!unheld_blocks(trial).empty())
-          return false;
-        return monolithic->solve(equations, solution, displacement);
-      }
-    if (!solve_condensed(equations, solution))
+    // Monolithic: a block the states cannot hold makes the whole system
+    // singular; say so before a sparse LU returns noise.
+    if (monolithic && !unheld_blocks(trial).empty())
       return false;
-    displacement = relative_displacement(solution);
-    return true;
-  }
-
-
-
-  template <int dim>
-  bool
-  ContactSolver<dim>::solve_condensed(
-    const std::vector<PairEquation<dim>> &equations,
-    Vector<double>                       &solution) const
-  {
-    const unsigned int n_r = n_pairs * dim;
-    // Unknowns: rho * scale (a displacement) and alpha, so that all entries
-    // are of unit order whatever the units of the model; the singularity
-    // test below then means the same for a rubber and a rock model. A row
-    // with force terms is multiplied by scale.
-    const double scale = flexibility_scale;
-
-    // A row that says rho_i = 0 (open pairs, held directions) removes its
-    // unknown: only the directions of the other pairs and the floating
-    // modes remain, some 250 of 4131 unknowns on the 1377-pair model.
-    std::vector<double>       key;
-    std::vector<unsigned int> unknowns;
-    key.reserve(n_r * (2 * dim + 1));
-    for (unsigned int row = 0; row < n_r; ++row)
-      {
-        const PairEquation<dim> &eq   = equations[row];
-        bool                     zero = eq.value == 0.;
-        for (unsigned int e = 0; e < dim; ++e)
-          {
-            key.push_back(eq.force_coefficients[e]);
-            key.push_back(eq.displacement_coefficients[e]);
-            zero = zero && eq.displacement_coefficients[e] == 0. &&
-                   (eq.force_coefficients[e] == 0.) == (e != row % dim);
-          }
-        key.push_back(zero ? 1. : 0.);
-        if (!zero)
-          unknowns.push_back(row);
-      }
-    const unsigned int n_rho = unknowns.size();
-    const unsigned int n     = n_rho + n_alpha_total;
-    if (n == 0)
-      {
-        // Every pair open and no floating block: all forces are zero (LAPACK
-        // refuses a 0 x 0 factorisation).
-        solution.reinit(n_r);
-        return true;
-      }
-
-    CondensedSystem &system = condensed_system;
-    if (system.coefficients != key || system.size != n)
-      {
-        system.coefficients = key;
-        system.unknowns     = unknowns;
-        assemble_condensed(equations, system);
-      }
-    if (!system.regular)
-      return false;
-
-    Vector<double> rhs(n);
-    for (unsigned int i = 0; i < n_rho; ++i)
-      {
-        const unsigned int       row   = unknowns[i];
-        const PairEquation<dim> &eq    = equations[row];
-        double                   value = eq.value;
-        for (unsigned int e = 0; e < dim; ++e)
-          value -= eq.displacement_coefficients[e] *
-                   external_displacement((row / dim) * dim + e);
-        rhs(i) = (eq.has_force_terms() ? scale : 1.) * value;
-      }
-    for (unsigned int a = 0; a < n_alpha_total; ++a)
-      rhs(n_rho + a) = -external_resultant[a] * scale;
-    system.solve(rhs);
-
-    solution.reinit(n_r + n_alpha_total);
-    for (unsigned int i = 0; i < n_rho; ++i)
-      solution(unknowns[i]) = rhs(i) / scale;
-    for (unsigned int a = 0; a < n_alpha_total; ++a)
-      solution(n_r + a) = rhs(n_rho + a);
-    return true;
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::assemble_condensed(
-    const std::vector<PairEquation<dim>> &equations,
-    CondensedSystem                      &system) const
-  {
-    const unsigned int               n_r      = n_pairs * dim;
-    const std::vector<unsigned int> &unknowns = system.unknowns;
-    const unsigned int               n_rho    = unknowns.size();
-    const unsigned int               n        = n_rho + n_alpha_total;
-    const double                     scale    = flexibility_scale;
-
-    // Not regular until factorised: a throw below must not leave the
-    // cache (keyed already) saying otherwise.
-    system.regular = false;
-    system.size    = n;
-    system.sparse_lu.reset();
-    if (use_sparse(unknowns))
-      {
-        system.matrix.reinit(0, 0);
-        assemble_condensed_sparse(equations, system);
-        return;
-      }
-    std::vector<int> column_of(n_r, -1);
-    for (unsigned int i = 0; i < n_rho; ++i)
-      column_of[unknowns[i]] = i;
-    LAPACKFullMatrix<double> &matrix = system.matrix;
-    matrix.reinit(n, n);
-    for (unsigned int i = 0; i < n_rho; ++i)
-      {
-        const unsigned int       row       = unknowns[i];
-        const unsigned int       k         = row / dim;
-        const PairEquation<dim> &eq        = equations[row];
-        const double             row_scale = eq.has_force_terms() ? scale : 1.;
-        // d_e = C_hat rho + P_hat alpha + Delta_F, with rho = x / scale.
-        for (unsigned int e = 0; e < dim; ++e)
-          {
-            const double a = eq.displacement_coefficients[e];
-            if (a != 0.)
-              {
-                const unsigned int source = k * dim + e;
-                for (unsigned int j = 0; j < n_rho; ++j)
-                  matrix(i, j) += row_scale * a *
-                                  flexibility_entry(source, unknowns[j]) /
-                                  scale;
-                for (unsigned int b = 0; b < n_alpha_total; ++b)
-                  matrix(i, n_rho + b) += row_scale * a * coupling(source, b);
-              }
-            if (eq.force_coefficients[e] != 0. && column_of[k * dim + e] >= 0)
-              matrix(i, column_of[k * dim + e]) += eq.force_coefficients[e];
-          }
-      }
-    // Equilibrium of the floating blocks: P^T r = -F_e.
-    for (unsigned int a = 0; a < n_alpha_total; ++a)
-      for (unsigned int j = 0; j < n_rho; ++j)
-        matrix(n_rho + a, j) = coupling(unknowns[j], a);
-
-    const double norm = matrix.l1_norm();
-    try
-      {
-        matrix.compute_lu_factorization();
-      }
-    catch (const LACExceptions::ExcSingular &)
-      {
-        return; // an exactly zero pivot
-      }
-    estimate_condition(system, norm);
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::estimate_condition(CondensedSystem &system,
-                                         const double     norm) const
-  {
-    // Condition estimate ||A||_1 ||A^{-1}||_1 from two pseudo-random
-    // right-hand sides (LAPACKFullMatrix's own estimate is for Cholesky).
-    const unsigned int n            = system.size;
-    double             inverse_norm = 0.;
-    for (unsigned int trial = 0; trial < 2; ++trial)
-      {
-        Vector<double> probe(n);
-        for (unsigned int i = 0; i < n; ++i)
-          probe(i) = std::sin(1.3 + 0.7 * i * (trial + 1)) + 0.1;
-        const double probe_norm = probe.l1_norm();
-        system.solve(probe);
-        const double ratio = probe.l1_norm() / probe_norm;
-        // Overflow past a tiny pivot (std::max would drop a NaN).
-        if (!std::isfinite(ratio))
-          return;
-        inverse_norm = std::max(inverse_norm, ratio);
-      }
-    system.regular = std::isfinite(norm) && norm * inverse_norm < 1e12;
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::CondensedSystem::solve(Vector<double> &x) const
-  {
-    if (sparse_lu)
-      sparse_lu->solve(x);
-    else
-      matrix.solve(x);
-  }
-
-
-
-  template <int dim>
-  bool
-  ContactSolver<dim>::use_sparse(
-    const std::vector<unsigned int> &unknowns) const
-  {
-    if (state_system != ContactParameters::StateSystem::automatic)
-      return state_system == ContactParameters::StateSystem::sparse;
-    const double n = unknowns.size() + n_alpha_total;
-    if (n < 1000)
-      return false;
-    // At most how many entries a row of pair k can have: the pair
-    // directions of every side on the blocks k touches, and twice their
-    // modes (P_hat's columns and, transposed, the equilibrium rows).
-    double entries = 0.;
-    for (const unsigned int row : unknowns)
-      for (const auto &[b, s] : pair_sides[row / dim])
-        entries += dim * block_flexibility[b].pairs.size() + dim * (dim + 1);
-    return entries <= 0.1 * n * n;
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::assemble_condensed_sparse(
-    const std::vector<PairEquation<dim>> &equations,
-    CondensedSystem                      &system) const
-  {
-    const std::vector<unsigned int> &unknowns = system.unknowns;
-    const unsigned int               n_rho    = unknowns.size();
-    const unsigned int               n        = system.size;
-    const double                     scale    = flexibility_scale;
-    std::vector<int>                 column_of(n_pairs * dim, -1);
-    for (unsigned int i = 0; i < n_rho; ++i)
-      column_of[unknowns[i]] = i;
-
-    // The rows of assemble_condensed(), with C_hat's entries only where
-    // two pairs share a block (H_b of that block), each gathered through
-    // entry_of (a row's entry of each column, -1 for none) in the order
-    // the terms come, so that every sum is that of the dense assembly.
-    std::vector<SparseRow> rows(n);
-    std::vector<int>       entry_of(n, -1);
-    const auto             add =
-      [&](SparseRow &row, const unsigned int column, const double value) {
-        if (entry_of[column] < 0)
-          {
-            entry_of[column] = row.size();
-            row.emplace_back(column, 0.);
-          }
-        row[entry_of[column]].second += value;
-      };
-    // P_hat's non-zero entries in the unknowns' rows.
-    std::vector<SparseRow> coupling_of(n_rho);
-    for (unsigned int j = 0; j < n_rho; ++j)
-      for (unsigned int a = 0; a < n_alpha_total; ++a)
-        if (coupling(unknowns[j], a) != 0.)
-          coupling_of[j].emplace_back(a, coupling(unknowns[j], a));
-    for (unsigned int i = 0; i < n_rho; ++i)
-      {
-        const unsigned int       row       = unknowns[i];
-        const unsigned int       k         = row / dim;
-        const PairEquation<dim> &eq        = equations[row];
-        const double             row_scale = eq.has_force_terms() ? scale : 1.;
-        for (unsigned int e = 0; e < dim; ++e)
-          {
-            const double a = eq.displacement_coefficients[e];
-            if (a != 0.)
-              {
-                add_flexibility_row(k,
-                                    e,
-                                    row_scale * a,
-                                    column_of,
-                                    [&](unsigned int c, double v) {
-                                      add(rows[i], c, v);
-                                    });
-                for (unsigned int b = 0; b < n_alpha_total; ++b)
-                  if (coupling(k * dim + e, b) != 0.)
-                    add(rows[i],
-                        n_rho + b,
-                        row_scale * a * coupling(k * dim + e, b));
-              }
-            if (eq.force_coefficients[e] != 0. && column_of[k * dim + e] >= 0)
-              add(rows[i], column_of[k * dim + e], eq.force_coefficients[e]);
-          }
-        for (const auto &[column, value] : rows[i])
-          entry_of[column] = -1;
-      }
-    // Equilibrium of the floating blocks: P^T r = -F_e.
-    for (unsigned int j = 0; j < n_rho; ++j)
-      for (const auto &[a, value] : coupling_of[j])
-        rows[n_rho + a].emplace_back(j, value);
-
-    DynamicSparsityPattern               dsp(n, n);
-    std::vector<types::global_dof_index> columns;
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        columns.clear();
-        for (const auto &[j, value] : rows[i])
-          columns.push_back(j);
-        dsp.add_entries(i, columns.begin(), columns.end());
-      }
-    SparsityPattern pattern;
-    pattern.copy_from(dsp);
-    SparseMatrix<double> matrix(pattern);
-    for (unsigned int i = 0; i < n; ++i)
-      for (const auto &[j, value] : rows[i])
-        matrix.set(i, j, value);
-
-    system.sparse_lu = std::make_unique<SparseDirectUMFPACK>();
-    try
-      {
-        system.sparse_lu->factorize(matrix);
-      }
-    catch (const SparseDirectUMFPACK::ExcUMFPACKError &)
-      {
-        // A zero pivot (UMFPACK's warning status 1, thrown by deal.II);
-        // running out of memory and the like pass on.
-        system.sparse_lu.reset();
-        return;
-      }
-    estimate_condition(system, matrix.l1_norm());
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::add_flexibility_row(
-    const unsigned int                                           k,
-    const unsigned int                                           e,
-    const double                                                 factor,
-    const std::vector<int>                                      &column_of,
-    const std::function<void(const unsigned int, const double)> &add) const
-  {
-    // (C_hat rho)_(k, e) / scale = sum over the blocks b of pair k's
-    // sides s, and every side t on b: H_b(s e, t f) x_(t f) / scale.
-    for (const auto &[b, s] : pair_sides[k])
-      {
-        const BlockFlexibility &flexibility = block_flexibility[b];
-        for (unsigned int t = 0; t < flexibility.pairs.size(); ++t)
-          for (unsigned int f = 0; f < dim; ++f)
-            {
-              const int column = column_of[flexibility.pairs[t] * dim + f];
-              if (column >= 0)
-                add(column,
-                    factor * flexibility.matrix(s * dim + e, t * dim + f) /
-                      flexibility_scale);
-            }
-      }
+    return system->solve(equations, loads, solution, displacement);
   }
 
 
@@ -863,7 +319,7 @@ namespace mbfem
         displacement_scale =
           std::max(displacement_scale, std::abs(displacement(i)));
       }
-    for (const double f : external_resultant)
+    for (const double f : loads.resultant)
       force_scale = std::max(force_scale, std::abs(f));
     for (const auto &pair : contact_pairs)
       displacement_scale = std::max(displacement_scale, pair.initial_gap);
@@ -1009,44 +465,6 @@ namespace mbfem
 
 
   template <int dim>
-  Vector<double>
-  ContactSolver<dim>::relative_displacement(
-    const Vector<double> &solution) const
-  {
-    const unsigned int n_r = n_pairs * dim;
-    Vector<double>     d(external_displacement);
-    for (unsigned int i = 0; i < n_r; ++i)
-      for (unsigned int a = 0; a < n_alpha_total; ++a)
-        d(i) += coupling(i, a) * solution(n_r + a);
-    // C_hat rho block by block, over the sides whose force is not zero.
-    for (const auto &flexibility : block_flexibility)
-      {
-        const unsigned int        n_sides = flexibility.pairs.size();
-        std::vector<unsigned int> columns;
-        std::vector<double>       forces;
-        for (unsigned int t = 0; t < n_sides; ++t)
-          for (unsigned int j = 0; j < dim; ++j)
-            if (solution(flexibility.pairs[t] * dim + j) != 0.)
-              {
-                columns.push_back(t * dim + j);
-                forces.push_back(solution(flexibility.pairs[t] * dim + j));
-              }
-        for (unsigned int s = 0; s < n_sides; ++s)
-          for (unsigned int i = 0; i < dim; ++i)
-            {
-              double value = 0.;
-              for (unsigned int c = 0; c < columns.size(); ++c)
-                value +=
-                  flexibility.matrix(s * dim + i, columns[c]) * forces[c];
-              d(flexibility.pairs[s] * dim + i) += value;
-            }
-      }
-    return d;
-  }
-
-
-
-  template <int dim>
   std::string
   ContactSolver<dim>::signature(const Trial &trial) const
   {
@@ -1090,9 +508,9 @@ namespace mbfem
   ContactSolver<dim>::unheld_blocks(const Trial &trial) const
   {
     std::ostringstream message;
-    for (unsigned int b = 0; b < n_alpha.size(); ++b)
+    for (unsigned int b = 0; b < coupling.n_blocks(); ++b)
       {
-        const unsigned int q = n_alpha[b];
+        const unsigned int q = coupling.n_modes(b);
         if (q == 0)
           continue;
         // The directions in which the block's pairs can push, given their
@@ -1104,7 +522,8 @@ namespace mbfem
             bool touches = false;
             for (unsigned int a = 0; a < q; ++a)
               for (unsigned int d = 0; d < dim; ++d)
-                if (std::abs(coupling(k * dim + d, alpha_offset[b] + a)) > 0.)
+                if (std::abs(coupling(k * dim + d, coupling.offset(b) + a)) >
+                    0.)
                   touches = true;
             if (!touches)
               continue;
@@ -1122,11 +541,12 @@ namespace mbfem
                 std::vector<double> column(q);
                 for (unsigned int a = 0; a < q; ++a)
                   {
-                    column[a] = coupling(k * dim + d, alpha_offset[b] + a);
+                    column[a] = coupling(k * dim + d, coupling.offset(b) + a);
                     if (trial.state[k] == ContactState::slip)
                       for (unsigned int e = 1; e < dim; ++e)
-                        column[a] -= mu * trial.slip_direction[k][e] *
-                                     coupling(k * dim + e, alpha_offset[b] + a);
+                        column[a] -=
+                          mu * trial.slip_direction[k][e] *
+                          coupling(k * dim + e, coupling.offset(b) + a);
                   }
                 columns.push_back(column);
               }
@@ -1145,15 +565,15 @@ namespace mbfem
           -1., 1e-10 * largest, 1e-14, eigenvalues, eigenvectors);
         if (eigenvalues.size() == 0)
           continue;
-        message << "\n    " << block_names[b]
+        message << "\n    " << coupling.block_name(b)
                 << " cannot be in equilibrium: its contact pairs (" << counts[0]
                 << " stick, " << counts[1] << " slip, " << counts[2]
                 << " open) cannot hold its rigid-body motion";
         for (unsigned int v = 0; v < eigenvalues.size(); ++v)
           {
-            Vector<double> combination(mode_coefficients[b][0].size());
+            Vector<double> combination(coupling.modes(b)[0].size());
             for (unsigned int a = 0; a < q; ++a)
-              combination.add(eigenvectors(a, v), mode_coefficients[b][a]);
+              combination.add(eigenvectors(a, v), coupling.modes(b)[a]);
             combination /= combination.linfty_norm();
             message << " [" << Block<dim>::describe_rigid_body_mode(combination)
                     << "]";
@@ -1173,31 +593,8 @@ namespace mbfem
   {
     // Data of this increment: Delta_F in the frames (condensed) or the
     // loads of the monolithic system, and F_e.
-    external_displacement.reinit(n_pairs * dim);
-    if (monolithic)
-      monolithic->set_load(blocks);
-    for (unsigned int k = 0; k < n_pairs && !monolithic; ++k)
-      {
-        const auto    &pair = contact_pairs[k];
-        Tensor<1, dim> d;
-        for (const int sign : {-1, 1})
-          {
-            const auto &side = pair.side(sign);
-            for (const auto &node : side.nodes)
-              for (unsigned int c = 0; c < dim; ++c)
-                d[c] += sign * node.weight *
-                        blocks[side.block]->get_solution()(node.dofs[c]);
-          }
-        for (unsigned int i = 0; i < dim; ++i)
-          external_displacement(k * dim + i) = pair.frame[i] * d;
-      }
-    external_resultant.assign(n_alpha_total, 0.);
-    for (unsigned int b = 0; b < blocks.size(); ++b)
-      {
-        const auto resultant = blocks[b]->external_load_resultant();
-        for (unsigned int a = 0; a < resultant.size(); ++a)
-          external_resultant[alpha_offset[b] + a] = resultant[a];
-      }
+    system->set_load(blocks, loads);
+    loads.resultant = coupling.load_resultant(blocks);
   }
 
 
@@ -1518,7 +915,7 @@ namespace mbfem
   Vector<double>
   ContactSolver<dim>::mechanism_motion(const Trial &trial) const
   {
-    if (n_alpha_total == 0)
+    if (coupling.n_modes() == 0)
       return Vector<double>();
     // The rows that fix a rigid motion: normal at a closed pair,
     // tangential at a stuck one.
@@ -1533,7 +930,7 @@ namespace mbfem
           if (!held[k][d] && (d == 0 || stuck))
             rows.push_back(k * dim + d);
       }
-    const unsigned int       q = n_alpha_total;
+    const unsigned int       q = coupling.n_modes();
     LAPACKFullMatrix<double> gram(q, q);
     // A row of P_hat couples the modes of the (at most two) blocks of its
     // pair only: add the products of its non-zero entries.
@@ -1566,13 +963,13 @@ namespace mbfem
       {
         double work = 0.;
         for (unsigned int a = 0; a < q; ++a)
-          work += external_resultant[a] * null_space(a, v);
+          work += loads.resultant[a] * null_space(a, v);
         for (unsigned int a = 0; a < q; ++a)
           motion(a) += work * null_space(a, v);
       }
     if (motion.l2_norm() < 1e-8 * std::max(1e-300, [&] {
                              double f = 0.;
-                             for (const double x : external_resultant)
+                             for (const double x : loads.resultant)
                                f += x * x;
                              return std::sqrt(f);
                            }()))
@@ -1591,13 +988,13 @@ namespace mbfem
     if (motion.size() == 0)
       return "";
     std::ostringstream message;
-    for (unsigned int b = 0; b < n_alpha.size(); ++b)
+    for (unsigned int b = 0; b < coupling.n_blocks(); ++b)
       {
         Vector<double> combination(
-          n_alpha[b] > 0 ? mode_coefficients[b][0].size() : 0);
-        for (unsigned int a = 0; a < n_alpha[b]; ++a)
-          combination.add(motion(alpha_offset[b] + a), mode_coefficients[b][a]);
-        if (n_alpha[b] == 0 ||
+          coupling.n_modes(b) > 0 ? coupling.modes(b)[0].size() : 0);
+        for (unsigned int a = 0; a < coupling.n_modes(b); ++a)
+          combination.add(motion(coupling.offset(b) + a), coupling.modes(b)[a]);
+        if (coupling.n_modes(b) == 0 ||
             combination.linfty_norm() < 1e-6 * motion.linfty_norm())
           continue;
         combination /= combination.linfty_norm();
@@ -1605,14 +1002,14 @@ namespace mbfem
         for (unsigned int k = 0; k < n_pairs; ++k)
           {
             bool touches = false;
-            for (unsigned int a = 0; a < n_alpha[b]; ++a)
+            for (unsigned int a = 0; a < coupling.n_modes(b); ++a)
               for (unsigned int d = 0; d < dim; ++d)
-                if (coupling(k * dim + d, alpha_offset[b] + a) != 0.)
+                if (coupling(k * dim + d, coupling.offset(b) + a) != 0.)
                   touches = true;
             if (touches)
               ++counts[static_cast<int>(trial.state[k])];
           }
-        message << "\n    " << block_names[b]
+        message << "\n    " << coupling.block_name(b)
                 << " cannot be in equilibrium: its contact pairs (" << counts[0]
                 << " stick, " << counts[1] << " slip, " << counts[2]
                 << " open) cannot hold its rigid-body motion ["
@@ -1711,9 +1108,9 @@ namespace mbfem
   std::vector<double>
   ContactSolver<dim>::floating_amplitudes(const unsigned int b) const
   {
-    std::vector<double> alpha(n_alpha[b]);
-    for (unsigned int a = 0; a < n_alpha[b]; ++a)
-      alpha[a] = current_solution(n_pairs * dim + alpha_offset[b] + a);
+    std::vector<double> alpha(coupling.n_modes(b));
+    for (unsigned int a = 0; a < coupling.n_modes(b); ++a)
+      alpha[a] = current_solution(n_pairs * dim + coupling.offset(b) + a);
     return alpha;
   }
 
@@ -1830,9 +1227,11 @@ namespace mbfem
         if (k < held.size())
           candidates[k].held = held[k];
       }
-    std::vector<double> resultant = external_resultant;
-    resultant.resize(n_alpha_total, 0.);
-    const Certificate certificate(std::move(candidates), coupling, resultant);
+    std::vector<double> resultant = loads.resultant;
+    resultant.resize(coupling.n_modes(), 0.);
+    const Certificate            certificate(std::move(candidates),
+                                  coupling.matrix(),
+                                  resultant);
     typename Certificate::Result result =
       certificate.solve(with_mechanism_factor);
 
@@ -1932,30 +1331,31 @@ namespace mbfem
   {
     // Each block's motion as a combination of its rigid-body modes
     // (translations, then rotations in units of the block's diameter).
-    std::vector<Vector<double>> motion(n_alpha.size());
+    std::vector<Vector<double>> motion(coupling.n_blocks());
     double                      largest = 0.;
-    for (unsigned int b = 0; b < n_alpha.size(); ++b)
+    for (unsigned int b = 0; b < coupling.n_blocks(); ++b)
       {
-        if (n_alpha[b] == 0)
+        if (coupling.n_modes(b) == 0)
           continue;
-        motion[b].reinit(mode_coefficients[b][0].size());
-        for (unsigned int a = 0; a < n_alpha[b]; ++a)
-          motion[b].add(mechanism[alpha_offset[b] + a],
-                        mode_coefficients[b][a]);
+        motion[b].reinit(coupling.modes(b)[0].size());
+        for (unsigned int a = 0; a < coupling.n_modes(b); ++a)
+          motion[b].add(mechanism[coupling.offset(b) + a],
+                        coupling.modes(b)[a]);
         largest = std::max(largest, motion[b].linfty_norm());
       }
     std::ostringstream text;
     text << std::fixed << std::setprecision(4);
-    for (unsigned int b = 0; b < n_alpha.size(); ++b)
+    for (unsigned int b = 0; b < coupling.n_blocks(); ++b)
       {
-        if (n_alpha[b] == 0 || motion[b].linfty_norm() <= 1e-6 * largest)
+        if (coupling.n_modes(b) == 0 ||
+            motion[b].linfty_norm() <= 1e-6 * largest)
           continue;
         Tensor<1, dim> translation;
         for (unsigned int d = 0; d < dim; ++d)
           translation[d] = motion[b](d);
         // Rotation per unit translation, or the rotation alone.
         const double length = translation.norm();
-        text << "\n      " << block_names[b] << ": ";
+        text << "\n      " << coupling.block_name(b) << ": ";
         if (length > 1e-6 * motion[b].linfty_norm())
           text << "translation along (" << translation / length << "), "
                << "rotation per unit translation ";
@@ -1980,9 +1380,9 @@ namespace mbfem
   ContactSolver<dim>::blocks_without_stuck_pairs() const
   {
     std::vector<std::string> names;
-    for (unsigned int b = 0; b < n_alpha.size(); ++b)
+    for (unsigned int b = 0; b < coupling.n_blocks(); ++b)
       {
-        if (n_alpha[b] == 0)
+        if (coupling.n_modes(b) == 0)
           continue;
         bool touched = false, stuck = false;
         for (unsigned int k = 0; k < n_pairs; ++k)
@@ -1992,7 +1392,7 @@ namespace mbfem
               stuck   = stuck || current.state[k] == ContactState::stick;
             }
         if (touched && !stuck)
-          names.push_back(block_names[b]);
+          names.push_back(coupling.block_name(b));
       }
     return names;
   }

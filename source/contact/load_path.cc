@@ -105,11 +105,11 @@ namespace mbfem
   void
   ContactSolver<dim>::set_load_fraction(const double s)
   {
-    external_displacement = start_displacement;
-    external_displacement.sadd(1. - s, s, full_displacement);
-    for (unsigned int a = 0; a < n_alpha_total; ++a)
-      external_resultant[a] =
-        (1. - s) * start_resultant[a] + s * full_resultant[a];
+    loads.displacement = start_loads.displacement;
+    loads.displacement.sadd(1. - s, s, full_loads.displacement);
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+      loads.resultant[a] =
+        (1. - s) * start_loads.resultant[a] + s * full_loads.resultant[a];
   }
 
 
@@ -139,7 +139,7 @@ namespace mbfem
                                                std::abs(segment.d_a(i)),
                                                std::abs(segment.d_1(i))});
       }
-    for (const double f : full_resultant)
+    for (const double f : full_loads.resultant)
       segment.force_scale = std::max(segment.force_scale, std::abs(f));
     for (const auto &pair : contact_pairs)
       segment.displacement_scale =
@@ -401,7 +401,7 @@ namespace mbfem
         Tensor<1, dim> w;
         for (unsigned int e = 1; e < dim; ++e)
           if (!held[k][e])
-            for (unsigned int a = 0; a < n_alpha_total; ++a)
+            for (unsigned int a = 0; a < coupling.n_modes(); ++a)
               w[e] += coupling(k * dim + e, a) * motion(a);
         along[k] = w * trial.slip_direction[k];
         largest  = std::max(largest, w.norm());
@@ -427,10 +427,10 @@ namespace mbfem
     // Only a motion the loads drive: without work, mechanism_motion()
     // names a free motion of either sign.
     double work = 0., load = 0.;
-    for (unsigned int a = 0; a < n_alpha_total; ++a)
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
       {
-        work += external_resultant[a] * motion(a);
-        load += external_resultant[a] * external_resultant[a];
+        work += loads.resultant[a] * motion(a);
+        load += loads.resultant[a] * loads.resultant[a];
       }
     if (!(work > 1e-8 * std::sqrt(load) * motion.l2_norm()))
       return false;
@@ -445,7 +445,7 @@ namespace mbfem
       {
         for (unsigned int e = 0; e < dim; ++e)
           if (!held[k][e])
-            for (unsigned int a = 0; a < n_alpha_total; ++a)
+            for (unsigned int a = 0; a < coupling.n_modes(); ++a)
               w[k][e] += coupling(k * dim + e, a) * motion(a);
         largest = std::max(largest, w[k].norm());
       }
@@ -569,22 +569,22 @@ namespace mbfem
   {
     // The start: the load for which the committed solution is exact with
     // the present C_hat, P_hat (these change between Newton's passes).
-    const unsigned int n_r = n_pairs * dim;
-    full_displacement      = external_displacement;
-    full_resultant         = external_resultant;
-    Vector<double> start(n_r + n_alpha_total);
+    const unsigned int n_r  = n_pairs * dim;
+    full_loads.displacement = loads.displacement;
+    full_loads.resultant    = loads.resultant;
+    Vector<double> start(n_r + coupling.n_modes());
     if (committed_solution.size() == start.size())
       start = committed_solution;
-    external_displacement.reinit(n_r);
-    start_displacement = relative_displacement(start);
-    start_displacement *= -1.;
+    loads.displacement.reinit(n_r);
+    start_loads.displacement = condensed->relative_displacement(start, loads);
+    start_loads.displacement *= -1.;
     for (unsigned int k = 0; k < n_pairs; ++k)
       for (unsigned int i = 0; i < dim; ++i)
-        start_displacement(k * dim + i) += committed_displacement[k][i];
-    start_resultant.assign(n_alpha_total, 0.);
-    for (unsigned int a = 0; a < n_alpha_total; ++a)
+        start_loads.displacement(k * dim + i) += committed_displacement[k][i];
+    start_loads.resultant.assign(coupling.n_modes(), 0.);
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
       for (unsigned int j = 0; j < n_r; ++j)
-        start_resultant[a] -= coupling(j, a) * start(j);
+        start_loads.resultant[a] -= coupling(j, a) * start(j);
   }
 
 

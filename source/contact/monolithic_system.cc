@@ -40,8 +40,11 @@ namespace mbfem
 
 
   template <int dim>
-  MonolithicSystem<dim>::MonolithicSystem(const std::string &solver_package)
-    : solver(solver_package)
+  MonolithicSystem<dim>::MonolithicSystem(
+    const std::vector<ContactPair<dim>> &contact_pairs,
+    const std::string                   &solver_package)
+    : pairs(contact_pairs)
+    , solver(solver_package)
   {}
 
 
@@ -49,10 +52,8 @@ namespace mbfem
   template <int dim>
   void
   MonolithicSystem<dim>::setup(
-    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
-    const std::vector<ContactPair<dim>>            &contact_pairs)
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks)
   {
-    pairs = contact_pairs;
     std::vector<SparsityPattern>      patterns(blocks.size());
     std::vector<SparseMatrix<double>> stiffness(blocks.size());
     assemble_blocks(blocks, patterns, stiffness);
@@ -232,8 +233,12 @@ namespace mbfem
   template <int dim>
   void
   MonolithicSystem<dim>::set_load(
-    const std::vector<std::unique_ptr<Block<dim>>> &blocks)
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+    IncrementLoads                                 &loads)
   {
+    // Delta_F is the condensed system's: here the loads enter the blocks'
+    // rows.
+    loads.displacement.reinit(pairs.size() * dim);
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
         const Vector<double> &f = blocks[b]->get_physical_load();
@@ -268,7 +273,8 @@ namespace mbfem
   template <int dim>
   bool
   MonolithicSystem<dim>::solve(const std::vector<PairEquation<dim>> &equations,
-                               Vector<double>                       &forces,
+                               const IncrementLoads &,
+                               Vector<double> &forces,
                                Vector<double> &displacement)
   {
     AssertDimension(equations.size(), pairs.size() * dim);

@@ -130,7 +130,7 @@ namespace mbfem
     const double cohesion = newton_bilateral(k, system.broken) ?
                               pair.joint.shear_strength(0., pair.area, false) :
                               0.;
-    return flexibility_scale * cohesion +
+    return condensed->scale() * cohesion +
            pair.joint.friction_coefficient * std::max(xi, 0.);
   }
 
@@ -262,16 +262,16 @@ namespace mbfem
     const unsigned int n_r = n_pairs * dim;
     system.linear.multiply(system.u, system.d);
     for (unsigned int i = 0; i < n_r; ++i)
-      system.d(i) += external_displacement(i);
-    system.residual.reinit(n_r + n_alpha_total);
+      system.d(i) += loads.displacement(i);
+    system.residual.reinit(n_r + coupling.n_modes());
     if (system.assemble)
       system.linear.clear_jacobian();
     for (unsigned int k = 0; k < n_pairs; ++k)
       newton_pair_residual(k, system);
     // The floating blocks' equilibrium, P^T r + F_e = 0, times scale.
-    for (unsigned int a = 0; a < n_alpha_total; ++a)
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
       {
-        double value = flexibility_scale * external_resultant[a];
+        double value = condensed->scale() * loads.resultant[a];
         for (const auto &[j, c] : system.coupling_column[a])
           {
             value += c * system.u(j);
@@ -294,9 +294,9 @@ namespace mbfem
     // the iterate (a near-singular step can make the iterate huge).
     double reference = 1e-300;
     for (unsigned int i = 0; i < n_r; ++i)
-      reference = std::max(reference, std::abs(external_displacement(i)));
-    for (const double f : external_resultant)
-      reference = std::max(reference, flexibility_scale * std::abs(f));
+      reference = std::max(reference, std::abs(loads.displacement(i)));
+    for (const double f : loads.resultant)
+      reference = std::max(reference, condensed->scale() * std::abs(f));
     for (const auto &pair : contact_pairs)
       reference = std::max(reference, pair.initial_gap);
 
@@ -402,8 +402,8 @@ namespace mbfem
         force        = std::max(force, std::abs(system.u(i)));
         displacement = std::max(displacement, std::abs(system.d(i)));
       }
-    for (const double f : external_resultant)
-      force = std::max(force, flexibility_scale * std::abs(f));
+    for (const double f : loads.resultant)
+      force = std::max(force, condensed->scale() * std::abs(f));
     for (const auto &pair : contact_pairs)
       displacement = std::max(displacement, pair.initial_gap);
     return {force, displacement};
@@ -415,7 +415,7 @@ namespace mbfem
   typename ContactSolver<dim>::Trial
   ContactSolver<dim>::newton_states(const NewtonSystem &system) const
   {
-    const double scale = flexibility_scale;
+    const double scale = condensed->scale();
     // check()'s relative tolerance: a slip increment below it is none.
     const auto [force_scale, displacement_scale] = newton_scales(system);
     const double force_tolerance = internal::check_tolerance * force_scale;
@@ -481,7 +481,7 @@ namespace mbfem
         if (pair.tied || held[k][0] || !newton_bilateral(k, system.broken))
           continue;
         const double limit =
-          flexibility_scale * pair.joint.tensile_limit(pair.area, false);
+          condensed->scale() * pair.joint.tensile_limit(pair.area, false);
         const double over = (-limit - system.u(k * dim)) / force;
         if (over > internal::check_tolerance && over > excess)
           {
@@ -502,26 +502,26 @@ namespace mbfem
     // block they share), and P_hat of the pair's blocks' modes.
     const unsigned int               n_r = n_pairs * dim;
     std::vector<NewtonJacobian::Row> rows(n_r);
-    system.coupling_column.assign(n_alpha_total, {});
-    std::vector<int> entry_of(n_r + n_alpha_total, -1);
+    system.coupling_column.assign(coupling.n_modes(), {});
+    std::vector<int> entry_of(n_r + coupling.n_modes(), -1);
     std::vector<int> every_column(n_r);
     std::iota(every_column.begin(), every_column.end(), 0);
     for (unsigned int i = 0; i < n_r; ++i)
       {
         auto &row = rows[i];
-        add_flexibility_row(i / dim,
-                            i % dim,
-                            1.,
-                            every_column,
-                            [&](const unsigned int column, const double value) {
-                              if (entry_of[column] < 0)
-                                {
-                                  entry_of[column] = row.size();
-                                  row.emplace_back(column, 0.);
-                                }
-                              row[entry_of[column]].second += value;
-                            });
-        for (unsigned int a = 0; a < n_alpha_total; ++a)
+        condensed->add_row(i / dim,
+                           i % dim,
+                           1.,
+                           every_column,
+                           [&](const unsigned int column, const double value) {
+                             if (entry_of[column] < 0)
+                               {
+                                 entry_of[column] = row.size();
+                                 row.emplace_back(column, 0.);
+                               }
+                             row[entry_of[column]].second += value;
+                           });
+        for (unsigned int a = 0; a < coupling.n_modes(); ++a)
           if (coupling(i, a) != 0.)
             {
               row.emplace_back(n_r + a, coupling(i, a));
@@ -530,7 +530,7 @@ namespace mbfem
         for (const auto &[column, value] : row)
           entry_of[column] = -1;
       }
-    system.linear.reinit(rows, n_r + n_alpha_total, dim);
+    system.linear.reinit(rows, n_r + coupling.n_modes(), dim);
   }
 
 
@@ -541,7 +541,7 @@ namespace mbfem
                                         unsigned int      &iterations)
   {
     const unsigned int n_r = n_pairs * dim;
-    const unsigned int n   = n_r + n_alpha_total;
+    const unsigned int n   = n_r + coupling.n_modes();
     NewtonSystem       system;
     system.broken = committed.broken;
     set_newton_matrix(system);
@@ -555,11 +555,11 @@ namespace mbfem
     std::fill(bonded.state.begin(), bonded.state.end(), ContactState::stick);
     if (solve_trial(bonded, solution, displacement))
       for (unsigned int i = 0; i < n; ++i)
-        system.u(i) = solution(i) * (i < n_r ? flexibility_scale : 1.);
+        system.u(i) = solution(i) * (i < n_r ? condensed->scale() : 1.);
     else if (committed_solution.size() == n)
       for (unsigned int i = 0; i < n; ++i)
         system.u(i) =
-          committed_solution(i) * (i < n_r ? flexibility_scale : 1.);
+          committed_solution(i) * (i < n_r ? condensed->scale() : 1.);
 
     // Joints break one at a time, the one furthest beyond its tensile
     // limit first, and the system is solved again from where it was.
@@ -606,10 +606,11 @@ namespace mbfem
     // The deformation part of d: Delta_F + C_hat rho, without the rigid
     // motions P_hat alpha.
     Vector<double> forces(current_solution);
-    for (unsigned int a = 0; a < n_alpha_total; ++a)
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
       forces(n_pairs * dim + a) = 0.;
-    const double elastic = relative_displacement(forces).linfty_norm();
-    double       slip    = 0.;
+    const double elastic =
+      condensed->relative_displacement(forces, loads).linfty_norm();
+    double slip = 0.;
     for (unsigned int k = 0; k < n_pairs; ++k)
       if (current.state[k] == ContactState::slip)
         slip = std::max(slip, slip_increment(k).norm());

@@ -2,8 +2,11 @@
 #define mbfem_contact_contact_solver_h
 
 #include <mbfem/block/block.h>
+#include <mbfem/contact/condensed_system.h>
 #include <mbfem/contact/contact_problem.h>
+#include <mbfem/contact/interface_system.h>
 #include <mbfem/contact/monolithic_system.h>
+#include <mbfem/contact/rigid_coupling.h>
 #include <mbfem/contact/state_method.h>
 #include <mbfem/contact/static_admissibility.h>
 #include <mbfem/interface/contact_interface.h>
@@ -313,11 +316,6 @@ namespace mbfem
                 Vector<double> &solution,
                 Vector<double> &displacement);
 
-    /** The condensed system: rho and alpha from C_hat, P_hat. */
-    bool
-    solve_condensed(const std::vector<PairEquation<dim>> &equations,
-                    Vector<double>                       &solution) const;
-
     /** Checks every pair; returns the new trial and violations. */
     Trial
     check(const Trial          &trial,
@@ -387,13 +385,6 @@ namespace mbfem
                const CheckScales &scales,
                Trial             &next,
                double            &violation) const;
-
-    /**
-     * d = Delta_F + C_hat rho + P_hat alpha in the pairs' frames, for the
-     * solution (rho, alpha) of a trial.
-     */
-    Vector<double>
-    relative_displacement(const Vector<double> &solution) const;
 
     /**
      * Which floating blocks the pairs of @p trial cannot hold, and in which
@@ -732,142 +723,26 @@ namespace mbfem
     /** The nominal joint law of every pair (strength reduction divides it). */
     std::vector<JointLaw> nominal_joints;
     /** The states before the first increment, for restart(). */
-    Trial                                  initial;
-    const unsigned int                     max_iterations;
-    const unsigned int                     n_pairs;
-    const ContactFormulation               contact_formulation;
-    std::unique_ptr<MonolithicSystem<dim>> monolithic;
-
-    /** Blocks' floating modes: offset of each block's alphas, and count. */
-    std::vector<unsigned int>                alpha_offset;
-    std::vector<unsigned int>                n_alpha;
-    unsigned int                             n_alpha_total = 0;
-    std::vector<std::string>                 block_names;
-    std::vector<std::vector<Vector<double>>> mode_coefficients;
-
+    Trial                    initial;
+    const unsigned int       max_iterations;
+    const unsigned int       n_pairs;
+    const ContactFormulation contact_formulation;
+    /** RigidCoupling: the floating modes and P_hat, for both formulations. */
+    RigidCoupling<dim> coupling;
     /**
-     * The flexibility C_hat = R C_a R^T in the pairs' frames, kept per
-     * block, so that its memory is the sum over blocks of (contact DoFs of
-     * the block)^2 rather than (all contact DoFs)^2: for block b, the
-     * signed, weighted and rotated C_b over the pair sides on b,
-     * H_b(s i, t j) = sign_s sign_t sum w w R_s[i] . C_b R_t[j]. C_hat of
-     * two pairs is the sum of H_b over the blocks they share.
+     * The interface system: CondensedSystem or MonolithicSystem, with a
+     * typed view of whichever it is (the other is nullptr) for what only
+     * one has (the load path and the Newton method need C_hat).
      */
-    struct BlockFlexibility
-    {
-      /** The pair of each side on this block (a side per row group). */
-      std::vector<unsigned int> pairs;
-      FullMatrix<double>        matrix;
-    };
-    std::vector<BlockFlexibility> block_flexibility;
-    /** For each pair, its sides: (index into block_flexibility, side). */
-    std::vector<std::vector<std::pair<unsigned int, unsigned int>>> pair_sides;
+    std::unique_ptr<InterfaceSystem<dim>> system;
+    CondensedSystem<dim>                 *condensed  = nullptr;
+    MonolithicSystem<dim>                *monolithic = nullptr;
 
-    /** setup(), step 1: each block's floating modes get their alpha_offset. */
-    void
-    number_floating_modes(
-      const std::vector<std::unique_ptr<Block<dim>>> &blocks);
-
-    /**
-     * setup(), step 2: the pair sides on @p block (number @p b), its H_b
-     * (condensed only) and its part of P (global axes) into @p p_global.
-     */
-    void
-    add_block_flexibility(Block<dim>         &block,
-                          const unsigned int  b,
-                          FullMatrix<double> &p_global);
-
-    /** setup(), step 3: P from global axes into the pairs' frames. */
-    void
-    rotate_coupling(const FullMatrix<double> &p_global);
-
-    /** setup(), step 4 (condensed): flexibility_scale and the held directions.
-     */
-    void
-    find_held_directions();
-
-    /** C_hat(k * dim + i, l * dim + j) from the blocks' H_b. */
-    double
-    flexibility_entry(const unsigned int row, const unsigned int column) const;
-
-    /**
-     * The system of the last solve_condensed(), over the unknowns its
-     * states leave free (the directions of the pairs that are not open,
-     * and the floating modes), LU-factorised, dense in matrix or sparse in
-     * sparse_lu (then matrix is empty; see use_sparse()): a trial whose
-     * equations have the same coefficients (only their values differ)
-     * reuses it. A cache, hence mutable.
-     */
-    struct CondensedSystem
-    {
-      std::vector<double>       coefficients; // the key
-      std::vector<unsigned int> unknowns;     // active rows of rho
-      unsigned int              size = 0;
-      LAPACKFullMatrix<double>  matrix;
-      /** The sparse LU instead of matrix (see use_sparse()). */
-      std::unique_ptr<SparseDirectUMFPACK> sparse_lu;
-      bool                                 regular = false;
-
-      /** x = A^{-1} x with whichever factorisation was made. */
-      void
-      solve(Vector<double> &x) const;
-    };
-    mutable CondensedSystem              condensed_system;
-    const ContactParameters::StateSystem state_system;
-
-    /**
-     * Builds and LU-factorises the system of @p equations over
-     * system.unknowns; system.regular says whether it has a solution
-     * (condition estimate below 1e12).
-     */
-    void
-    assemble_condensed(const std::vector<PairEquation<dim>> &equations,
-                       CondensedSystem                      &system) const;
-
-    /**
-     * Whether the system over @p unknowns is factorised sparse: by the
-     * State system parameter, or (auto) when it has at least 1000 unknowns
-     * and at most a tenth of its entries can be non-zero (two pairs share
-     * no block elsewhere).
-     */
-    bool
-    use_sparse(const std::vector<unsigned int> &unknowns) const;
-
-    /** The same system as assemble_condensed(), as a sparse matrix. */
-    void
-    assemble_condensed_sparse(const std::vector<PairEquation<dim>> &equations,
-                              CondensedSystem &system) const;
-
-    /** A row of a sparse system: (column, value). */
-    using SparseRow = std::vector<std::pair<unsigned int, double>>;
-
-    /**
-     * Calls @p add(column, value) with @p factor times row (k, e) of
-     * C_hat / flexibility_scale, over the columns (@p column_of) of the
-     * unknowns.
-     */
-    void
-    add_flexibility_row(
-      const unsigned int                                           k,
-      const unsigned int                                           e,
-      const double                                                 factor,
-      const std::vector<int>                                      &column_of,
-      const std::function<void(const unsigned int, const double)> &add) const;
-
-    /** Sets system.regular from a condition estimate of the factorisation. */
-    void
-    estimate_condition(CondensedSystem &system, const double norm) const;
-
-    /** P_hat = R P in the pairs' frames. */
-    FullMatrix<double> coupling;
-    /** Mean diagonal of flexibility: scales the forces in the system. */
-    double flexibility_scale = 1.;
     /** Directions in which both nodes are held by supports. */
     std::vector<std::array<bool, dim>> held;
 
-    /** Data of the current increment. */
-    Vector<double>      external_displacement; // R Delta_F (condensed)
-    std::vector<double> external_resultant;    // F_e, per alpha
+    /** The loads of the current increment (Delta_F, F_e). */
+    IncrementLoads loads;
 
     /** Converged state and the solution of the current increment. */
     Trial                       committed;
@@ -878,9 +753,8 @@ namespace mbfem
     /** (rho, alpha) of the converged increment: the load path's start. */
     Vector<double> committed_solution;
 
-    /** The load path: the data of the increment at s = 1 and at s = 0. */
-    Vector<double>      full_displacement, start_displacement;
-    std::vector<double> full_resultant, start_resultant;
+    /** The load path: the loads of the increment at s = 1 and at s = 0. */
+    IncrementLoads full_loads, start_loads;
 
     std::vector<StateMethod> state_methods   = {StateMethod::fast,
                                                 StateMethod::load_path,

@@ -2,6 +2,7 @@
 #define mbfem_contact_monolithic_system_h
 
 #include <mbfem/block/block.h>
+#include <mbfem/contact/interface_system.h>
 #include <mbfem/interface/contact_interface.h>
 #include <mbfem/interface/pair_equation.h>
 #include <mbfem/linear_algebra/direct_solver.h>
@@ -39,10 +40,11 @@ namespace mbfem
    * rows are of the size of the stiffness rows.
    */
   template <int dim>
-  class MonolithicSystem
+  class MonolithicSystem : public InterfaceSystem<dim>
   {
   public:
-    explicit MonolithicSystem(const std::string &solver_package);
+    MonolithicSystem(const std::vector<ContactPair<dim>> &pairs,
+                     const std::string                   &solver_package);
 
     /**
      * The blocks' unpinned stiffness matrices and the pattern of the whole
@@ -50,33 +52,34 @@ namespace mbfem
      * physical constraints exist.
      */
     void
-    setup(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
-          const std::vector<ContactPair<dim>>            &pairs);
+    setup(const std::vector<std::unique_ptr<Block<dim>>> &blocks) override;
 
     /**
      * Loads and prescribed values of the current increment, after every
-     * block's assemble_load().
+     * block's assemble_load(); @p loads gets a zero Delta_F.
      */
     void
-    set_load(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
+    set_load(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+             IncrementLoads                                 &loads) override;
 
     /**
      * Pair directions that no free degree of freedom moves (both nodes on
      * supports): their force goes to the supports.
      */
     std::vector<std::array<bool, dim>>
-    held() const;
+    held() const override;
 
     /**
      * Solves the system with the rows @p equations (pair by pair, dim rows
-     * each). Returns the pairs' forces and relative displacements in their
-     * frames, or false if the factorisation fails or gives no finite
-     * solution.
+     * each); the loads are those of set_load(). Returns the pairs' forces
+     * and relative displacements in their frames, or false if the
+     * factorisation fails or gives no finite solution.
      */
     bool
     solve(const std::vector<PairEquation<dim>> &equations,
+          const IncrementLoads                 &loads,
           Vector<double>                       &forces,
-          Vector<double>                       &displacement);
+          Vector<double>                       &displacement) override;
 
     /**
      * Block @p b's displacement from the last solve, its constrained

@@ -1,0 +1,198 @@
+#ifndef mbfem_contact_condensed_system_h
+#define mbfem_contact_condensed_system_h
+
+#include <mbfem/block/block.h>
+#include <mbfem/contact/interface_system.h>
+#include <mbfem/contact/rigid_coupling.h>
+#include <mbfem/interface/contact_interface.h>
+#include <mbfem/interface/pair_equation.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <functional>
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /**
+   * The interface system of the multi-body method (paper eqs. 7-10, 15),
+   * condensed onto the contact pairs through the blocks' flexibilities:
+   *
+   *   d = Delta_F + C_hat rho + P_hat alpha,   P_hat^T rho + F_e = 0,
+   *
+   * C_hat = R C_a R^T in the pairs' frames, kept per block so that its
+   * memory is the sum over blocks of (contact DoFs of the block)^2, not
+   * (all contact DoFs)^2. The unknowns of solve() are rho * scale() (a
+   * displacement) and alpha, so that every entry is of unit order whatever
+   * the model's units.
+   */
+  template <int dim>
+  class CondensedSystem : public InterfaceSystem<dim>
+  {
+  public:
+    /**
+     * The system of @p pairs, whose floating modes @p coupling describes;
+     * both must outlive it (ContactSolver owns all three).
+     */
+    CondensedSystem(const std::vector<ContactPair<dim>> &pairs,
+                    const RigidCoupling<dim>            &coupling,
+                    const ContactParameters::StateSystem state_system);
+
+    /**
+     * C_hat from every block's factorisation (Block::flexibility()),
+     * scale() and the held directions. @p coupling must be set up.
+     */
+    void
+    setup(const std::vector<std::unique_ptr<Block<dim>>> &blocks) override;
+
+    /** Delta_F, from each block's response u_F in its solution. */
+    void
+    set_load(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+             IncrementLoads                                 &loads) override;
+
+    bool
+    solve(const std::vector<PairEquation<dim>> &equations,
+          const IncrementLoads                 &loads,
+          Vector<double>                       &solution,
+          Vector<double>                       &displacement) override;
+
+    std::vector<std::array<bool, dim>>
+    held() const override;
+
+    /** Mean diagonal of C_hat: the scale of the forces in the system. */
+    double
+    scale() const;
+
+    /** C_hat(k * dim + i, l * dim + j), from the blocks' H_b. */
+    double
+    entry(const unsigned int row, const unsigned int column) const;
+
+    /**
+     * Calls @p add(column, value) with @p factor times row (k, e) of
+     * C_hat / scale(), over the columns (@p column_of) of the unknowns: a
+     * row of a sparse system, only where two pairs share a block.
+     */
+    void
+    add_row(
+      const unsigned int                                           k,
+      const unsigned int                                           e,
+      const double                                                 factor,
+      const std::vector<int>                                      &column_of,
+      const std::function<void(const unsigned int, const double)> &add) const;
+
+    /** Adds every entry of C_hat to @p matrix, (row, column) -> value. */
+    void
+    add_entries(
+      std::map<std::pair<unsigned int, unsigned int>, double> &matrix) const;
+
+    /**
+     * d = Delta_F + C_hat rho + P_hat alpha in the pairs' frames, for the
+     * solution (rho, alpha) of a system.
+     */
+    Vector<double>
+    relative_displacement(const Vector<double> &solution,
+                          const IncrementLoads &loads) const;
+
+  private:
+    /**
+     * H_b(s i, t j) = sign_s sign_t sum w w R_s[i] . C_b R_t[j] of one block
+     * over the pair sides on it. C_hat of two pairs is the sum of H_b over
+     * the blocks they share.
+     */
+    struct BlockFlexibility
+    {
+      /** The pair of each side on this block (a side per row group). */
+      std::vector<unsigned int> pairs;
+      FullMatrix<double>        matrix;
+    };
+
+    /**
+     * The system of the last solve(), over the unknowns its states leave
+     * free (the directions of the pairs that are not open, and the floating
+     * modes), LU-factorised, dense in matrix or sparse in sparse_lu (then
+     * matrix is empty; see use_sparse()): a trial whose equations have the
+     * same coefficients (only their values differ) reuses it.
+     */
+    struct Factorisation
+    {
+      std::vector<double>       coefficients; // the key
+      std::vector<unsigned int> unknowns;     // active rows of rho
+      unsigned int              size = 0;
+      LAPACKFullMatrix<double>  matrix;
+      /** The sparse LU instead of matrix (see use_sparse()). */
+      std::unique_ptr<SparseDirectUMFPACK> sparse_lu;
+      bool                                 regular = false;
+
+      /** x = A^{-1} x with whichever factorisation was made. */
+      void
+      solve(Vector<double> &x) const;
+    };
+
+    /** A row of a sparse system: (column, value). */
+    using SparseRow = std::vector<std::pair<unsigned int, double>>;
+
+    /** setup(), per block: the pair sides on @p block (number @p b), H_b. */
+    void
+    add_block(Block<dim> &block, const unsigned int b);
+
+    /** setup(), last: scale() and the held directions. */
+    void
+    find_held_directions();
+
+    /** solve(), without d: (rho, alpha) into @p solution. */
+    bool
+    solve_forces(const std::vector<PairEquation<dim>> &equations,
+                 const IncrementLoads                 &loads,
+                 Vector<double>                       &solution);
+
+    /**
+     * Builds and LU-factorises the system of @p equations over
+     * system.unknowns; system.regular says whether it has a solution
+     * (condition estimate below 1e12).
+     */
+    void
+    assemble(const std::vector<PairEquation<dim>> &equations,
+             Factorisation                        &system) const;
+
+    /** The same system as assemble(), as a sparse matrix. */
+    void
+    assemble_sparse(const std::vector<PairEquation<dim>> &equations,
+                    Factorisation                        &system) const;
+
+    /**
+     * Whether the system over @p unknowns is factorised sparse: by the
+     * State system parameter, or (auto) when it has at least 1000 unknowns
+     * and at most a tenth of its entries can be non-zero (two pairs share
+     * no block elsewhere).
+     */
+    bool
+    use_sparse(const std::vector<unsigned int> &unknowns) const;
+
+    /** Sets system.regular from a condition estimate of the factorisation. */
+    void
+    estimate_condition(Factorisation &system, const double norm) const;
+
+    const std::vector<ContactPair<dim>> &pairs;
+    const RigidCoupling<dim>            &coupling;
+    const unsigned int                   n_pairs;
+    const ContactParameters::StateSystem state_system;
+
+    std::vector<BlockFlexibility> block_flexibility;
+    /** For each pair, its sides: (index into block_flexibility, side). */
+    std::vector<std::vector<std::pair<unsigned int, unsigned int>>> pair_sides;
+    double                             flexibility_scale = 1.;
+    std::vector<std::array<bool, dim>> held_directions;
+    Factorisation                      factorisation;
+  };
+} // namespace mbfem
+
+#endif

@@ -1,0 +1,107 @@
+#ifndef mbfem_contact_rigid_coupling_h
+#define mbfem_contact_rigid_coupling_h
+
+#include <mbfem/block/block.h>
+#include <mbfem/interface/contact_interface.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /**
+   * The floating blocks' free rigid-body modes seen from the contact pairs
+   * (the paper's eq. 15): the amplitudes alpha numbered block by block, and
+   * P_hat, the relative displacement of every pair direction (in the pair's
+   * frame) per unit amplitude. Both formulations need it: the condensed
+   * system solves for alpha, and the mechanism checks and the statics
+   * certificate of both read P_hat.
+   */
+  template <int dim>
+  class RigidCoupling
+  {
+  public:
+    /** Numbers the modes of @p blocks and builds P_hat for @p pairs. */
+    void
+    setup(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+          const std::vector<ContactPair<dim>>            &pairs);
+
+    /** All amplitudes (the floating modes of every block). */
+    unsigned int
+    n_modes() const
+    {
+      return total;
+    }
+
+    /** The floating modes of block @p b (0 for a supported block). */
+    unsigned int
+    n_modes(const unsigned int b) const
+    {
+      return block_modes[b];
+    }
+
+    /** The index of block @p b's first amplitude. */
+    unsigned int
+    offset(const unsigned int b) const
+    {
+      return first_mode[b];
+    }
+
+    unsigned int
+    n_blocks() const
+    {
+      return block_modes.size();
+    }
+
+    const std::string &
+    block_name(const unsigned int b) const
+    {
+      return names[b];
+    }
+
+    /** Block @p b's free modes as displacement vectors of its DoFs. */
+    const std::vector<Vector<double>> &
+    modes(const unsigned int b) const
+    {
+      return mode_vectors[b];
+    }
+
+    /** P_hat(pair direction @p row, amplitude @p a). */
+    double
+    operator()(const unsigned int row, const unsigned int a) const
+    {
+      return p_hat(row, a);
+    }
+
+    /** P_hat, (pairs x dim) x n_modes(). */
+    const FullMatrix<double> &
+    matrix() const
+    {
+      return p_hat;
+    }
+
+    /**
+     * F_e: the resultant of each block's external load on each of its free
+     * modes, per amplitude (after every block's assemble_load()).
+     */
+    std::vector<double>
+    load_resultant(
+      const std::vector<std::unique_ptr<Block<dim>>> &blocks) const;
+
+  private:
+    std::vector<unsigned int>                first_mode;
+    std::vector<unsigned int>                block_modes;
+    unsigned int                             total = 0;
+    std::vector<std::string>                 names;
+    std::vector<std::vector<Vector<double>>> mode_vectors;
+    FullMatrix<double>                       p_hat;
+  };
+} // namespace mbfem
+
+#endif

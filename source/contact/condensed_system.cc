@@ -1,0 +1,620 @@
+#include <mbfem/contact/condensed_system.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace mbfem
+{
+  template <int dim>
+  CondensedSystem<dim>::CondensedSystem(
+    const std::vector<ContactPair<dim>> &pairs,
+    const RigidCoupling<dim>            &coupling,
+    const ContactParameters::StateSystem state_system)
+    : pairs(pairs)
+    , coupling(coupling)
+    , n_pairs(pairs.size())
+    , state_system(state_system)
+  {}
+
+
+
+  namespace
+  {
+    /**
+     * H = S C S^T for a block: C its flexibility over its contact DoFs, S
+     * the (sides x dim) x (contact DoFs) map of signed, weighted nodes
+     * rotated into each side's pair frame (@p rows: per row of S, its
+     * (DoF index, coefficient) entries). Two sparse-times-dense passes;
+     * C is released after the first.
+     */
+    FullMatrix<double>
+    project(
+      FullMatrix<double>                                              &c,
+      const std::vector<std::vector<std::pair<unsigned int, double>>> &rows)
+    {
+      const unsigned int m = c.m(), n = rows.size();
+      // T = C S^T (m x n), then H = S T, both along contiguous rows.
+      FullMatrix<double> t(m, n);
+      for (unsigned int q = 0; q < m; ++q)
+        for (unsigned int r = 0; r < n; ++r)
+          {
+            double value = 0.;
+            for (const auto &[p, weight] : rows[r])
+              value += weight * c(q, p);
+            t(q, r) = value;
+          }
+      c.reinit(0, 0);
+      FullMatrix<double> h(n, n);
+      for (unsigned int r = 0; r < n; ++r)
+        for (const auto &[q, weight] : rows[r])
+          for (unsigned int s = 0; s < n; ++s)
+            h(r, s) += weight * t(q, s);
+      return h;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::setup(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks)
+  {
+    block_flexibility.clear();
+    pair_sides.assign(n_pairs, {});
+    factorisation = Factorisation();
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      add_block(*blocks[b], b);
+    find_held_directions();
+  }
+
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::add_block(Block<dim> &block, const unsigned int b)
+  {
+    // The pair sides on this block: (pair, sign); b gets +r, a gets -r.
+    std::vector<std::pair<unsigned int, double>>    sides;
+    std::vector<types::global_dof_index>            dofs;
+    std::map<types::global_dof_index, unsigned int> index_of;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      for (const int sign : {-1, 1})
+        {
+          const auto &side = pairs[k].side(sign);
+          if (side.block != b)
+            continue;
+          sides.emplace_back(k, sign);
+          for (const auto &node : side.nodes)
+            for (const auto dof : node.dofs)
+              if (index_of.emplace(dof, dofs.size()).second)
+                dofs.push_back(dof);
+        }
+    if (dofs.empty())
+      return;
+
+    // A side's displacement is sum_i w_i u(node_i), in its pair's
+    // frame: the rows of S (see project()).
+    std::vector<std::vector<std::pair<unsigned int, double>>> rows(
+      sides.size() * dim);
+    BlockFlexibility flexibility;
+    for (unsigned int s = 0; s < sides.size(); ++s)
+      {
+        const auto &[k, sign]       = sides[s];
+        const Tensor<2, dim> &frame = pairs[k].frame;
+        flexibility.pairs.push_back(k);
+        pair_sides[k].emplace_back(block_flexibility.size(), s);
+        for (const auto &node : pairs[k].side(sign).nodes)
+          {
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int c = 0; c < dim; ++c)
+                if (frame[i][c] != 0.)
+                  rows[s * dim + i].emplace_back(index_of[node.dofs[c]],
+                                                 sign * node.weight *
+                                                   frame[i][c]);
+          }
+      }
+    FullMatrix<double> c_block = block.flexibility(dofs);
+    flexibility.matrix         = project(c_block, rows);
+    block_flexibility.push_back(std::move(flexibility));
+  }
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::find_held_directions()
+  {
+    const unsigned int  n_r = n_pairs * dim;
+    std::vector<double> diagonal(n_r);
+    for (unsigned int i = 0; i < n_r; ++i)
+      diagonal[i] = entry(i, i);
+    const double trace = std::accumulate(diagonal.begin(), diagonal.end(), 0.);
+    flexibility_scale  = (n_r > 0 && trace > 0. ? trace / n_r : 1.);
+
+    // A direction in which neither node can move (both on supports) carries
+    // no contact force: the supports take it.
+    const double max_diagonal =
+      n_r > 0 ? *std::max_element(diagonal.begin(), diagonal.end()) : 0.;
+    held_directions.assign(n_pairs, std::array<bool, dim>());
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          double mobility = 0.;
+          for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+            mobility = std::max(mobility, std::abs(coupling(k * dim + d, a)));
+          held_directions[k][d] =
+            diagonal[k * dim + d] < 1e-12 * max_diagonal && mobility < 1e-12;
+        }
+  }
+
+
+  template <int dim>
+  double
+  CondensedSystem<dim>::entry(const unsigned int row,
+                              const unsigned int column) const
+  {
+    const unsigned int k = row / dim, l = column / dim;
+    double             value = 0.;
+    for (const auto &[b, s] : pair_sides[k])
+      for (const auto &[c, t] : pair_sides[l])
+        if (b == c)
+          value += block_flexibility[b].matrix(s * dim + row % dim,
+                                               t * dim + column % dim);
+    return value;
+  }
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::set_load(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+    IncrementLoads                                 &loads)
+  {
+    loads.displacement.reinit(n_pairs * dim);
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        const auto    &pair = pairs[k];
+        Tensor<1, dim> d;
+        for (const int sign : {-1, 1})
+          {
+            const auto &side = pair.side(sign);
+            for (const auto &node : side.nodes)
+              for (unsigned int c = 0; c < dim; ++c)
+                d[c] += sign * node.weight *
+                        blocks[side.block]->get_solution()(node.dofs[c]);
+          }
+        for (unsigned int i = 0; i < dim; ++i)
+          loads.displacement(k * dim + i) = pair.frame[i] * d;
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<std::array<bool, dim>>
+  CondensedSystem<dim>::held() const
+  {
+    return held_directions;
+  }
+
+
+
+  template <int dim>
+  double
+  CondensedSystem<dim>::scale() const
+  {
+    return flexibility_scale;
+  }
+
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::add_entries(
+    std::map<std::pair<unsigned int, unsigned int>, double> &matrix) const
+  {
+    for (const auto &block : block_flexibility)
+      for (unsigned int s = 0; s < block.pairs.size(); ++s)
+        for (unsigned int t = 0; t < block.pairs.size(); ++t)
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              matrix[{block.pairs[s] * dim + i, block.pairs[t] * dim + j}] +=
+                block.matrix(s * dim + i, t * dim + j);
+  }
+
+
+
+  template <int dim>
+  bool
+  CondensedSystem<dim>::solve(const std::vector<PairEquation<dim>> &equations,
+                              const IncrementLoads                 &loads,
+                              Vector<double>                       &solution,
+                              Vector<double> &displacement)
+  {
+    if (!solve_forces(equations, loads, solution))
+      return false;
+    displacement = relative_displacement(solution, loads);
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  CondensedSystem<dim>::solve_forces(
+    const std::vector<PairEquation<dim>> &equations,
+    const IncrementLoads                 &loads,
+    Vector<double>                       &solution)
+  {
+    const unsigned int n_r = n_pairs * dim;
+    // Unknowns: rho * scale (a displacement) and alpha, so that all entries
+    // are of unit order whatever the units of the model; the singularity
+    // test below then means the same for a rubber and a rock model. A row
+    // with force terms is multiplied by scale.
+    const double scale = flexibility_scale;
+
+    // A row that says rho_i = 0 (open pairs, held directions) removes its
+    // unknown: only the directions of the other pairs and the floating
+    // modes remain, some 250 of 4131 unknowns on the 1377-pair model.
+    std::vector<double>       key;
+    std::vector<unsigned int> unknowns;
+    key.reserve(n_r * (2 * dim + 1));
+    for (unsigned int row = 0; row < n_r; ++row)
+      {
+        const PairEquation<dim> &eq   = equations[row];
+        bool                     zero = eq.value == 0.;
+        for (unsigned int e = 0; e < dim; ++e)
+          {
+            key.push_back(eq.force_coefficients[e]);
+            key.push_back(eq.displacement_coefficients[e]);
+            zero = zero && eq.displacement_coefficients[e] == 0. &&
+                   (eq.force_coefficients[e] == 0.) == (e != row % dim);
+          }
+        key.push_back(zero ? 1. : 0.);
+        if (!zero)
+          unknowns.push_back(row);
+      }
+    const unsigned int n_rho = unknowns.size();
+    const unsigned int n     = n_rho + coupling.n_modes();
+    if (n == 0)
+      {
+        // Every pair open and no floating block: all forces are zero (LAPACK
+        // refuses a 0 x 0 factorisation).
+        solution.reinit(n_r);
+        return true;
+      }
+
+    Factorisation &system = factorisation;
+    if (system.coefficients != key || system.size != n)
+      {
+        system.coefficients = key;
+        system.unknowns     = unknowns;
+        assemble(equations, system);
+      }
+    if (!system.regular)
+      return false;
+
+    Vector<double> rhs(n);
+    for (unsigned int i = 0; i < n_rho; ++i)
+      {
+        const unsigned int       row   = unknowns[i];
+        const PairEquation<dim> &eq    = equations[row];
+        double                   value = eq.value;
+        for (unsigned int e = 0; e < dim; ++e)
+          value -= eq.displacement_coefficients[e] *
+                   loads.displacement((row / dim) * dim + e);
+        rhs(i) = (eq.has_force_terms() ? scale : 1.) * value;
+      }
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+      rhs(n_rho + a) = -loads.resultant[a] * scale;
+    system.solve(rhs);
+
+    solution.reinit(n_r + coupling.n_modes());
+    for (unsigned int i = 0; i < n_rho; ++i)
+      solution(unknowns[i]) = rhs(i) / scale;
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+      solution(n_r + a) = rhs(n_rho + a);
+    return true;
+  }
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::assemble(
+    const std::vector<PairEquation<dim>> &equations,
+    Factorisation                        &system) const
+  {
+    const unsigned int               n_r      = n_pairs * dim;
+    const std::vector<unsigned int> &unknowns = system.unknowns;
+    const unsigned int               n_rho    = unknowns.size();
+    const unsigned int               n        = n_rho + coupling.n_modes();
+    const double                     scale    = flexibility_scale;
+
+    // Not regular until factorised: a throw below must not leave the
+    // cache (keyed already) saying otherwise.
+    system.regular = false;
+    system.size    = n;
+    system.sparse_lu.reset();
+    if (use_sparse(unknowns))
+      {
+        system.matrix.reinit(0, 0);
+        assemble_sparse(equations, system);
+        return;
+      }
+    std::vector<int> column_of(n_r, -1);
+    for (unsigned int i = 0; i < n_rho; ++i)
+      column_of[unknowns[i]] = i;
+    LAPACKFullMatrix<double> &matrix = system.matrix;
+    matrix.reinit(n, n);
+    for (unsigned int i = 0; i < n_rho; ++i)
+      {
+        const unsigned int       row       = unknowns[i];
+        const unsigned int       k         = row / dim;
+        const PairEquation<dim> &eq        = equations[row];
+        const double             row_scale = eq.has_force_terms() ? scale : 1.;
+        // d_e = C_hat rho + P_hat alpha + Delta_F, with rho = x / scale.
+        for (unsigned int e = 0; e < dim; ++e)
+          {
+            const double a = eq.displacement_coefficients[e];
+            if (a != 0.)
+              {
+                const unsigned int source = k * dim + e;
+                for (unsigned int j = 0; j < n_rho; ++j)
+                  matrix(i, j) +=
+                    row_scale * a * entry(source, unknowns[j]) / scale;
+                for (unsigned int b = 0; b < coupling.n_modes(); ++b)
+                  matrix(i, n_rho + b) += row_scale * a * coupling(source, b);
+              }
+            if (eq.force_coefficients[e] != 0. && column_of[k * dim + e] >= 0)
+              matrix(i, column_of[k * dim + e]) += eq.force_coefficients[e];
+          }
+      }
+    // Equilibrium of the floating blocks: P^T r = -F_e.
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+      for (unsigned int j = 0; j < n_rho; ++j)
+        matrix(n_rho + a, j) = coupling(unknowns[j], a);
+
+    const double norm = matrix.l1_norm();
+    try
+      {
+        matrix.compute_lu_factorization();
+      }
+    catch (const LACExceptions::ExcSingular &)
+      {
+        return; // an exactly zero pivot
+      }
+    estimate_condition(system, norm);
+  }
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::estimate_condition(Factorisation &system,
+                                           const double   norm) const
+  {
+    // Condition estimate ||A||_1 ||A^{-1}||_1 from two pseudo-random
+    // right-hand sides (LAPACKFullMatrix's own estimate is for Cholesky).
+    const unsigned int n            = system.size;
+    double             inverse_norm = 0.;
+    for (unsigned int trial = 0; trial < 2; ++trial)
+      {
+        Vector<double> probe(n);
+        for (unsigned int i = 0; i < n; ++i)
+          probe(i) = std::sin(1.3 + 0.7 * i * (trial + 1)) + 0.1;
+        const double probe_norm = probe.l1_norm();
+        system.solve(probe);
+        const double ratio = probe.l1_norm() / probe_norm;
+        // Overflow past a tiny pivot (std::max would drop a NaN).
+        if (!std::isfinite(ratio))
+          return;
+        inverse_norm = std::max(inverse_norm, ratio);
+      }
+    system.regular = std::isfinite(norm) && norm * inverse_norm < 1e12;
+  }
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::Factorisation::solve(Vector<double> &x) const
+  {
+    if (sparse_lu)
+      sparse_lu->solve(x);
+    else
+      matrix.solve(x);
+  }
+
+
+  template <int dim>
+  bool
+  CondensedSystem<dim>::use_sparse(
+    const std::vector<unsigned int> &unknowns) const
+  {
+    if (state_system != ContactParameters::StateSystem::automatic)
+      return state_system == ContactParameters::StateSystem::sparse;
+    const double n = unknowns.size() + coupling.n_modes();
+    if (n < 1000)
+      return false;
+    // At most how many entries a row of pair k can have: the pair
+    // directions of every side on the blocks k touches, and twice their
+    // modes (P_hat's columns and, transposed, the equilibrium rows).
+    double entries = 0.;
+    for (const unsigned int row : unknowns)
+      for (const auto &[b, s] : pair_sides[row / dim])
+        entries += dim * block_flexibility[b].pairs.size() + dim * (dim + 1);
+    return entries <= 0.1 * n * n;
+  }
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::assemble_sparse(
+    const std::vector<PairEquation<dim>> &equations,
+    Factorisation                        &system) const
+  {
+    const std::vector<unsigned int> &unknowns = system.unknowns;
+    const unsigned int               n_rho    = unknowns.size();
+    const unsigned int               n        = system.size;
+    const double                     scale    = flexibility_scale;
+    std::vector<int>                 column_of(n_pairs * dim, -1);
+    for (unsigned int i = 0; i < n_rho; ++i)
+      column_of[unknowns[i]] = i;
+
+    // The rows of assemble_condensed(), with C_hat's entries only where
+    // two pairs share a block (H_b of that block), each gathered through
+    // entry_of (a row's entry of each column, -1 for none) in the order
+    // the terms come, so that every sum is that of the dense assembly.
+    std::vector<SparseRow> rows(n);
+    std::vector<int>       entry_of(n, -1);
+    const auto             add =
+      [&](SparseRow &row, const unsigned int column, const double value) {
+        if (entry_of[column] < 0)
+          {
+            entry_of[column] = row.size();
+            row.emplace_back(column, 0.);
+          }
+        row[entry_of[column]].second += value;
+      };
+    // P_hat's non-zero entries in the unknowns' rows.
+    std::vector<SparseRow> coupling_of(n_rho);
+    for (unsigned int j = 0; j < n_rho; ++j)
+      for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+        if (coupling(unknowns[j], a) != 0.)
+          coupling_of[j].emplace_back(a, coupling(unknowns[j], a));
+    for (unsigned int i = 0; i < n_rho; ++i)
+      {
+        const unsigned int       row       = unknowns[i];
+        const unsigned int       k         = row / dim;
+        const PairEquation<dim> &eq        = equations[row];
+        const double             row_scale = eq.has_force_terms() ? scale : 1.;
+        for (unsigned int e = 0; e < dim; ++e)
+          {
+            const double a = eq.displacement_coefficients[e];
+            if (a != 0.)
+              {
+                add_row(k,
+                        e,
+                        row_scale * a,
+                        column_of,
+                        [&](unsigned int c, double v) { add(rows[i], c, v); });
+                for (unsigned int b = 0; b < coupling.n_modes(); ++b)
+                  if (coupling(k * dim + e, b) != 0.)
+                    add(rows[i],
+                        n_rho + b,
+                        row_scale * a * coupling(k * dim + e, b));
+              }
+            if (eq.force_coefficients[e] != 0. && column_of[k * dim + e] >= 0)
+              add(rows[i], column_of[k * dim + e], eq.force_coefficients[e]);
+          }
+        for (const auto &[column, value] : rows[i])
+          entry_of[column] = -1;
+      }
+    // Equilibrium of the floating blocks: P^T r = -F_e.
+    for (unsigned int j = 0; j < n_rho; ++j)
+      for (const auto &[a, value] : coupling_of[j])
+        rows[n_rho + a].emplace_back(j, value);
+
+    DynamicSparsityPattern               dsp(n, n);
+    std::vector<types::global_dof_index> columns;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        columns.clear();
+        for (const auto &[j, value] : rows[i])
+          columns.push_back(j);
+        dsp.add_entries(i, columns.begin(), columns.end());
+      }
+    SparsityPattern pattern;
+    pattern.copy_from(dsp);
+    SparseMatrix<double> matrix(pattern);
+    for (unsigned int i = 0; i < n; ++i)
+      for (const auto &[j, value] : rows[i])
+        matrix.set(i, j, value);
+
+    system.sparse_lu = std::make_unique<SparseDirectUMFPACK>();
+    try
+      {
+        system.sparse_lu->factorize(matrix);
+      }
+    catch (const SparseDirectUMFPACK::ExcUMFPACKError &)
+      {
+        // A zero pivot (UMFPACK's warning status 1, thrown by deal.II);
+        // running out of memory and the like pass on.
+        system.sparse_lu.reset();
+        return;
+      }
+    estimate_condition(system, matrix.l1_norm());
+  }
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::add_row(
+    const unsigned int                                           k,
+    const unsigned int                                           e,
+    const double                                                 factor,
+    const std::vector<int>                                      &column_of,
+    const std::function<void(const unsigned int, const double)> &add) const
+  {
+    // (C_hat rho)_(k, e) / scale = sum over the blocks b of pair k's
+    // sides s, and every side t on b: H_b(s e, t f) x_(t f) / scale.
+    for (const auto &[b, s] : pair_sides[k])
+      {
+        const BlockFlexibility &flexibility = block_flexibility[b];
+        for (unsigned int t = 0; t < flexibility.pairs.size(); ++t)
+          for (unsigned int f = 0; f < dim; ++f)
+            {
+              const int column = column_of[flexibility.pairs[t] * dim + f];
+              if (column >= 0)
+                add(column,
+                    factor * flexibility.matrix(s * dim + e, t * dim + f) /
+                      flexibility_scale);
+            }
+      }
+  }
+
+
+  template <int dim>
+  Vector<double>
+  CondensedSystem<dim>::relative_displacement(const Vector<double> &solution,
+                                              const IncrementLoads &loads) const
+  {
+    const unsigned int n_r = n_pairs * dim;
+    Vector<double>     d(loads.displacement);
+    for (unsigned int i = 0; i < n_r; ++i)
+      for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+        d(i) += coupling(i, a) * solution(n_r + a);
+    // C_hat rho block by block, over the sides whose force is not zero.
+    for (const auto &flexibility : block_flexibility)
+      {
+        const unsigned int        n_sides = flexibility.pairs.size();
+        std::vector<unsigned int> columns;
+        std::vector<double>       forces;
+        for (unsigned int t = 0; t < n_sides; ++t)
+          for (unsigned int j = 0; j < dim; ++j)
+            if (solution(flexibility.pairs[t] * dim + j) != 0.)
+              {
+                columns.push_back(t * dim + j);
+                forces.push_back(solution(flexibility.pairs[t] * dim + j));
+              }
+        for (unsigned int s = 0; s < n_sides; ++s)
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              double value = 0.;
+              for (unsigned int c = 0; c < columns.size(); ++c)
+                value +=
+                  flexibility.matrix(s * dim + i, columns[c]) * forces[c];
+              d(flexibility.pairs[s] * dim + i) += value;
+            }
+      }
+    return d;
+  }
+
+
+
+  template class CondensedSystem<2>;
+  template class CondensedSystem<3>;
+} // namespace mbfem
