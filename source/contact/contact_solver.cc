@@ -1,5 +1,6 @@
 #include <mbfem/base/exceptions.h>
 #include <mbfem/contact/contact_solver.h>
+#include <mbfem/contact/semismooth_newton.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -7,6 +8,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -758,6 +760,128 @@ namespace mbfem
       }
     set_load_fraction(1.);
     return outcome;
+  }
+
+
+
+  namespace
+  {
+    /**
+     * A 3D answer with every pair of a block slipping stands if its largest
+     * slip increment is below this times the largest elastic relative
+     * displacement (0.63 and 1.35 on the 3D incline at 0.999 of its limit,
+     * in 10 increments and in one); the unbounded slips it refuses beyond
+     * a limit are orders of magnitude larger (|u| of 1e7 m on issue 20's
+     * wedge).
+     */
+    constexpr double elastic_slip_factor = 1e3;
+    /**
+     * load_continuation()'s load fractions (of the increment, from the
+     * last converged state): from ten times the load back to it.
+     */
+    constexpr std::array<double, 4> continuation_fractions = {
+      {10., 5., 2., 1.}};
+  } // namespace
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::semismooth_newton(const unsigned int increment,
+                                        unsigned int      &iterations)
+  {
+    // From the increment's bonded answer (every pair stuck), where it
+    // exists: Newton is local, and from the unloaded state it can end at
+    // an indeterminate answer, every pair slipping around a spinning
+    // block, which exists below the limit but is not what the load drives.
+    Trial          bonded = committed;
+    Vector<double> start, displacement;
+    std::fill(bonded.state.begin(), bonded.state.end(), ContactState::stick);
+    if (!solve_trial(bonded, start, displacement))
+      start = committed_solution;
+
+    SemismoothNewton<dim> newton(contact_pairs,
+                                 *condensed,
+                                 coupling,
+                                 held,
+                                 loads,
+                                 committed,
+                                 committed_displacement);
+    if (!newton.solve(start, iterations))
+      return false;
+    const FastOutcome polish =
+      fast_iteration(newton.answer_states(), increment);
+    iterations += polish.iterations;
+    return polish.converged && acceptable_answer();
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::acceptable_answer() const
+  {
+    // In 3D a block can be in equilibrium with every pair slipping below
+    // its limit: the slip directions, spread by the block's elastic
+    // deformation, hold it. mechanism() ignores that (it counts a slipping
+    // pair as no resistance), so such states name a mechanism. The answer
+    // stands if its slip is of the order of the blocks' deformation: the
+    // fast iteration's check has verified the forces within every pair's
+    // strength and the equilibrium is solved, so it is statically
+    // admissible; what is refused is the unbounded slip (1e7 m on issue
+    // 20's wedge) with which a linearised direction can make such states
+    // regular beyond a limit.
+    return mechanism(current).empty() || (dim == 3 && slip_is_elastic());
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::slip_is_elastic() const
+  {
+    // The deformation part of d: Delta_F + C_hat rho, without the rigid
+    // motions P_hat alpha.
+    Vector<double> forces(current_solution);
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+      forces(n_pairs * dim + a) = 0.;
+    const double elastic =
+      condensed->relative_displacement(forces, loads).linfty_norm();
+    double slip = 0.;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      if (current.state[k] == ContactState::slip)
+        slip = std::max(slip, slip_increment(k).norm());
+    return slip <= elastic_slip_factor * elastic;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::load_continuation(const unsigned int increment,
+                                        unsigned int      &iterations)
+  {
+    // The increment's load scaled up (its data extrapolated past s = 1),
+    // where a gap that a block must close by a rigid motion weighs less
+    // against the deformation, then brought back to s = 1 in steps, the
+    // fast iteration at each from the states of the last. Issue 20's
+    // toppling pair with a tenth of its weight in increment 1: the fast
+    // iteration concludes at ten times that load, and each step back in
+    // one iteration.
+    Trial trial  = committed;
+    bool  solved = true;
+    for (const double s : continuation_fractions)
+      {
+        set_load_fraction(s);
+        const FastOutcome outcome = fast_iteration(trial, increment);
+        iterations += outcome.iterations;
+        solved = outcome.converged;
+        if (!solved)
+          break;
+        trial = current;
+      }
+    set_load_fraction(1.);
+    return solved && acceptable_answer();
   }
 
 

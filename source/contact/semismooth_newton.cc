@@ -1,6 +1,5 @@
-#include <mbfem/base/exceptions.h>
-#include <mbfem/contact/contact_solver.h>
 #include <mbfem/contact/newton_jacobian.h>
+#include <mbfem/contact/semismooth_newton.h>
 
 #include <algorithm>
 #include <array>
@@ -8,9 +7,9 @@
 #include <numeric>
 
 // The semismooth Newton method of the contact state iteration
-// (doc/state_iteration.md, doc/decisions.md): the third method, tried where
-// the fast iteration and the load path both fail. The increment is written
-// as one nonsmooth system in (rho, alpha), the joint law by Alart and
+// (doc/state_iteration.md, doc/decisions.md): by default the third method,
+// tried where the fast iteration and the load path both fail. The increment is
+// written as one nonsmooth system in (rho, alpha), the joint law by Alart and
 // Curnier's projections:
 //
 //   normal:     r_N - max(0, r_N - eps g) = 0      (g the gap),
@@ -22,9 +21,9 @@
 // backtracking line search, its Jacobian sparse (NewtonJacobian). In 3D the
 // slip direction is part of the projection, so it may turn freely within the
 // increment (which the load path, holding it over a segment, cannot follow).
-// Its answer gives the states, which the fast iteration then solves and checks,
-// so that the result is the same discrete problem, with the same tolerances, as
-// the other two methods'.
+// Its answer gives the states, which ContactSolver's fast iteration then solves
+// and checks, so that the result is the same discrete problem, with the same
+// tolerances, as the other methods'.
 
 namespace mbfem
 {
@@ -46,21 +45,6 @@ namespace mbfem
     constexpr double trust_factor = 1e3;
     /** Levenberg-Marquardt's smallest damping (relative to diag J^T J). */
     constexpr double initial_damping = 1e-10;
-    /**
-     * A 3D answer with every pair of a block slipping stands if its largest
-     * slip increment is below this times the largest elastic relative
-     * displacement (0.63 and 1.35 on the 3D incline at 0.999 of its limit,
-     * in 10 increments and in one); the unbounded slips it refuses beyond
-     * a limit are orders of magnitude larger (|u| of 1e7 m on issue 20's
-     * wedge).
-     */
-    constexpr double elastic_slip_factor = 1e3;
-    /**
-     * load_continuation()'s load fractions (of the increment, from the
-     * last converged state): from ten times the load back to it.
-     */
-    constexpr std::array<double, 4> continuation_fractions = {
-      {10., 5., 2., 1.}};
     /** check()'s relative tolerance (contact_solver.cc, check_scales()). */
     constexpr double check_tolerance = 1e-9;
   } // namespace internal
@@ -68,7 +52,28 @@ namespace mbfem
 
 
   template <int dim>
-  struct ContactSolver<dim>::NewtonSystem
+  SemismoothNewton<dim>::SemismoothNewton(
+    const std::vector<ContactPair<dim>>      &pairs,
+    const CondensedSystem<dim>               &system,
+    const RigidCoupling<dim>                 &coupling,
+    const std::vector<std::array<bool, dim>> &held,
+    const IncrementLoads                     &loads,
+    const StateTrial<dim>                    &committed,
+    const std::vector<Tensor<1, dim>>        &committed_displacement)
+    : pairs(pairs)
+    , interface(system)
+    , coupling(coupling)
+    , held(held)
+    , loads(loads)
+    , committed(committed)
+    , committed_displacement(committed_displacement)
+    , n_pairs(pairs.size())
+  {}
+
+
+
+  template <int dim>
+  struct SemismoothNewton<dim>::System
   {
     /** d = Delta_F + A u, u = (rho * scale, alpha): A's rows are those of
      * [C_hat / scale, P_hat]; and the Jacobian. */
@@ -78,7 +83,7 @@ namespace mbfem
     /** Pairs broken before or during this increment (history). */
     std::vector<bool> broken;
     Vector<double>    u, d, residual;
-    /** Whether newton_residual() assembles the Jacobian too. */
+    /** Whether evaluate() assembles the Jacobian too. */
     bool assemble = false;
 
     void
@@ -103,14 +108,14 @@ namespace mbfem
 
   template <int dim>
   bool
-  ContactSolver<dim>::newton_bilateral(const unsigned int       k,
-                                       const std::vector<bool> &broken) const
+  SemismoothNewton<dim>::is_bilateral(const unsigned int       k,
+                                      const std::vector<bool> &broken) const
   {
     // A joint with strength that is closed at the increment's start stays
-    // closed until it breaks (the outer loop of semismooth_newton() breaks
+    // closed until it breaks (the outer loop of solve() breaks
     // it): its force may be tensile. One open at the start (across a gap)
     // is unilateral.
-    return !broken[k] && contact_pairs[k].joint.has_strength() &&
+    return !broken[k] && pairs[k].joint.has_strength() &&
            committed.state[k] != ContactState::open;
   }
 
@@ -118,19 +123,19 @@ namespace mbfem
 
   template <int dim>
   double
-  ContactSolver<dim>::newton_radius(const unsigned int  k,
-                                    const double        xi,
-                                    const NewtonSystem &system) const
+  SemismoothNewton<dim>::radius(const unsigned int k,
+                                const double       xi,
+                                const System      &system) const
   {
     // The friction disc's radius, times scale: cohesion only for a joint
     // held closed (a unilateral pair's disc would otherwise not vanish
     // when it opens); the polishing fast iteration checks the real
     // strength.
-    const auto  &pair     = contact_pairs[k];
-    const double cohesion = newton_bilateral(k, system.broken) ?
+    const auto  &pair     = pairs[k];
+    const double cohesion = is_bilateral(k, system.broken) ?
                               pair.joint.shear_strength(0., pair.area, false) :
                               0.;
-    return condensed->scale() * cohesion +
+    return interface.scale() * cohesion +
            pair.joint.friction_coefficient * std::max(xi, 0.);
   }
 
@@ -138,10 +143,10 @@ namespace mbfem
 
   template <int dim>
   void
-  ContactSolver<dim>::newton_pair_residual(const unsigned int k,
-                                           NewtonSystem      &system) const
+  SemismoothNewton<dim>::pair_residual(const unsigned int k,
+                                       System            &system) const
   {
-    const auto           &pair = contact_pairs[k];
+    const auto           &pair = pairs[k];
     const unsigned int    r0   = k * dim;
     const Vector<double> &u = system.u, &d = system.d;
     Vector<double>       &F = system.residual;
@@ -166,7 +171,7 @@ namespace mbfem
 
     // Normal: closed (g = 0) or open (r_N = 0); xi the augmented normal
     // force that sets the friction disc's radius.
-    const bool bilateral  = newton_bilateral(k, system.broken);
+    const bool bilateral  = is_bilateral(k, system.broken);
     double     xi         = 0.;
     bool       xi_has_gap = false;
     if (!held[k][0])
@@ -185,22 +190,22 @@ namespace mbfem
             system.add_unit(r0, r0, 1.);
           }
       }
-    newton_tangential_residual(k, xi, xi_has_gap, system);
+    tangential_residual(k, xi, xi_has_gap, system);
   }
 
 
 
   template <int dim>
   void
-  ContactSolver<dim>::newton_tangential_residual(const unsigned int k,
-                                                 const double       xi,
-                                                 const bool         xi_has_gap,
-                                                 NewtonSystem &system) const
+  SemismoothNewton<dim>::tangential_residual(const unsigned int k,
+                                             const double       xi,
+                                             const bool         xi_has_gap,
+                                             System            &system) const
   {
-    const auto           &pair = contact_pairs[k];
+    const auto           &pair = pairs[k];
     const unsigned int    r0   = k * dim;
     const double          mu   = pair.joint.friction_coefficient;
-    const double          R    = newton_radius(k, xi, system);
+    const double          R    = radius(k, xi, system);
     const Vector<double> &u = system.u, &d = system.d;
     Vector<double>       &F = system.residual;
 
@@ -257,7 +262,7 @@ namespace mbfem
 
   template <int dim>
   double
-  ContactSolver<dim>::newton_residual(NewtonSystem &system) const
+  SemismoothNewton<dim>::evaluate(System &system) const
   {
     const unsigned int n_r = n_pairs * dim;
     system.linear.multiply(system.u, system.d);
@@ -267,11 +272,11 @@ namespace mbfem
     if (system.assemble)
       system.linear.clear_jacobian();
     for (unsigned int k = 0; k < n_pairs; ++k)
-      newton_pair_residual(k, system);
+      pair_residual(k, system);
     // The floating blocks' equilibrium, P^T r + F_e = 0, times scale.
     for (unsigned int a = 0; a < coupling.n_modes(); ++a)
       {
-        double value = condensed->scale() * loads.resultant[a];
+        double value = interface.scale() * loads.resultant[a];
         for (const auto &[j, c] : system.coupling_column[a])
           {
             value += c * system.u(j);
@@ -286,8 +291,8 @@ namespace mbfem
 
   template <int dim>
   bool
-  ContactSolver<dim>::newton_solve(NewtonSystem &system,
-                                   unsigned int &iterations) const
+  SemismoothNewton<dim>::solve_system(System       &system,
+                                      unsigned int &iterations) const
   {
     const unsigned int n_r = n_pairs * dim;
     // The scale of the residual and of a step: the increment's data, not
@@ -296,15 +301,15 @@ namespace mbfem
     for (unsigned int i = 0; i < n_r; ++i)
       reference = std::max(reference, std::abs(loads.displacement(i)));
     for (const double f : loads.resultant)
-      reference = std::max(reference, condensed->scale() * std::abs(f));
-    for (const auto &pair : contact_pairs)
+      reference = std::max(reference, interface.scale() * std::abs(f));
+    for (const auto &pair : pairs)
       reference = std::max(reference, pair.initial_gap);
 
     double damping = internal::initial_damping;
     for (unsigned int it = 0; it < internal::newton_max_iterations; ++it)
       {
         system.assemble    = true;
-        const double merit = newton_residual(system);
+        const double merit = evaluate(system);
         system.assemble    = false;
         if (system.residual.linfty_norm() <=
             internal::newton_tolerance * reference)
@@ -315,7 +320,7 @@ namespace mbfem
         // Marquardt's, which always can.
         const double trust =
           internal::trust_factor * std::max(reference, system.u.linfty_norm());
-        if (!newton_line_search(system, merit, trust) &&
+        if (!line_search(system, merit, trust) &&
             !levenberg_marquardt_step(system, merit, damping))
           return false;
       }
@@ -326,9 +331,9 @@ namespace mbfem
 
   template <int dim>
   bool
-  ContactSolver<dim>::newton_line_search(NewtonSystem &system,
-                                         const double  merit,
-                                         const double  trust) const
+  SemismoothNewton<dim>::line_search(System      &system,
+                                     const double merit,
+                                     const double trust) const
   {
     // A nearly singular Jacobian can give a step of NaNs: solve() says so.
     Vector<double> step(system.residual);
@@ -346,13 +351,12 @@ namespace mbfem
       {
         system.u = start;
         system.u.add(t, step);
-        if (newton_residual(system) <=
-            (1. - 2. * internal::armijo * t * cut) * merit)
+        if (evaluate(system) <= (1. - 2. * internal::armijo * t * cut) * merit)
           return true;
       }
     // Back to the start, with its residual (the fallback step needs it).
     system.u = start;
-    newton_residual(system);
+    evaluate(system);
     return false;
   }
 
@@ -360,13 +364,13 @@ namespace mbfem
 
   template <int dim>
   bool
-  ContactSolver<dim>::levenberg_marquardt_step(NewtonSystem &system,
-                                               const double  merit,
-                                               double       &damping) const
+  SemismoothNewton<dim>::levenberg_marquardt_step(System      &system,
+                                                  const double merit,
+                                                  double      &damping) const
   {
     // (J^T J + lambda diag(J^T J)) step = -J^T F, lambda raised tenfold
     // until the merit decreases and lowered after a success.
-    // F at the start: newton_residual() overwrites system.residual with
+    // F at the start: evaluate() overwrites system.residual with
     // that of each rejected try.
     const Vector<double> start = system.u, residual = system.residual;
     for (unsigned int attempt = 0; attempt < internal::max_halvings; ++attempt)
@@ -376,7 +380,7 @@ namespace mbfem
           {
             system.u = start;
             system.u += step;
-            if (newton_residual(system) < merit)
+            if (evaluate(system) < merit)
               {
                 damping = std::max(damping / 10., internal::initial_damping);
                 return true;
@@ -392,7 +396,7 @@ namespace mbfem
 
   template <int dim>
   std::pair<double, double>
-  ContactSolver<dim>::newton_scales(const NewtonSystem &system) const
+  SemismoothNewton<dim>::scales(const System &system) const
   {
     // As check_scales(), in the units of u: the largest force (of the
     // pairs and the floating blocks' loads) and displacement.
@@ -403,8 +407,8 @@ namespace mbfem
         displacement = std::max(displacement, std::abs(system.d(i)));
       }
     for (const double f : loads.resultant)
-      force = std::max(force, condensed->scale() * std::abs(f));
-    for (const auto &pair : contact_pairs)
+      force = std::max(force, interface.scale() * std::abs(f));
+    for (const auto &pair : pairs)
       displacement = std::max(displacement, pair.initial_gap);
     return {force, displacement};
   }
@@ -412,20 +416,20 @@ namespace mbfem
 
 
   template <int dim>
-  typename ContactSolver<dim>::Trial
-  ContactSolver<dim>::newton_states(const NewtonSystem &system) const
+  StateTrial<dim>
+  SemismoothNewton<dim>::states(const System &system) const
   {
-    const double scale = condensed->scale();
+    const double scale = interface.scale();
     // check()'s relative tolerance: a slip increment below it is none.
-    const auto [force_scale, displacement_scale] = newton_scales(system);
+    const auto [force_scale, displacement_scale] = scales(system);
     const double force_tolerance = internal::check_tolerance * force_scale;
     const double displacement_tolerance =
       internal::check_tolerance * displacement_scale;
-    Trial trial  = committed;
-    trial.broken = system.broken;
+    StateTrial<dim> trial = committed;
+    trial.broken          = system.broken;
     for (unsigned int k = 0; k < n_pairs; ++k)
       {
-        const auto        &pair = contact_pairs[k];
+        const auto        &pair = pairs[k];
         const unsigned int r0   = k * dim;
         if (pair.tied || std::all_of(held[k].begin(),
                                      held[k].end(),
@@ -433,7 +437,7 @@ namespace mbfem
           continue;
         const double gap             = pair.initial_gap + system.d(r0);
         const double w               = held[k][0] ? 0. : system.u(r0) - gap;
-        const bool   bilateral       = newton_bilateral(k, system.broken);
+        const bool   bilateral       = is_bilateral(k, system.broken);
         trial.tensile_slip[k]        = false;
         trial.direction_stiffness[k] = 0.;
         if (!bilateral && w <= 0.)
@@ -442,7 +446,7 @@ namespace mbfem
             continue;
           }
         const double   xi = bilateral ? system.u(r0) : w;
-        const double   R  = newton_radius(k, xi, system);
+        const double   R  = radius(k, xi, system);
         Tensor<1, dim> z, v, r_t;
         for (unsigned int e = 1; e < dim; ++e)
           if (!held[k][e])
@@ -468,20 +472,20 @@ namespace mbfem
 
   template <int dim>
   unsigned int
-  ContactSolver<dim>::newton_worst_tension(const NewtonSystem &system) const
+  SemismoothNewton<dim>::worst_tension(const System &system) const
   {
     // The joint in tension beyond its limit by the most (relative to the
     // largest force, with check()'s tolerance): it breaks first.
     unsigned int worst  = numbers::invalid_unsigned_int;
     double       excess = 0.;
-    const double force  = newton_scales(system).first;
+    const double force  = scales(system).first;
     for (unsigned int k = 0; k < n_pairs; ++k)
       {
-        const auto &pair = contact_pairs[k];
-        if (pair.tied || held[k][0] || !newton_bilateral(k, system.broken))
+        const auto &pair = pairs[k];
+        if (pair.tied || held[k][0] || !is_bilateral(k, system.broken))
           continue;
         const double limit =
-          condensed->scale() * pair.joint.tensile_limit(pair.area, false);
+          interface.scale() * pair.joint.tensile_limit(pair.area, false);
         const double over = (-limit - system.u(k * dim)) / force;
         if (over > internal::check_tolerance && over > excess)
           {
@@ -496,7 +500,7 @@ namespace mbfem
 
   template <int dim>
   void
-  ContactSolver<dim>::set_newton_matrix(NewtonSystem &system) const
+  SemismoothNewton<dim>::set_matrix(System &system) const
   {
     // A's rows: C_hat / scale where two pairs share a block (H_b of each
     // block they share), and P_hat of the pair's blocks' modes.
@@ -509,18 +513,18 @@ namespace mbfem
     for (unsigned int i = 0; i < n_r; ++i)
       {
         auto &row = rows[i];
-        condensed->add_row(i / dim,
-                           i % dim,
-                           1.,
-                           every_column,
-                           [&](const unsigned int column, const double value) {
-                             if (entry_of[column] < 0)
-                               {
-                                 entry_of[column] = row.size();
-                                 row.emplace_back(column, 0.);
-                               }
-                             row[entry_of[column]].second += value;
-                           });
+        interface.add_row(i / dim,
+                          i % dim,
+                          1.,
+                          every_column,
+                          [&](const unsigned int column, const double value) {
+                            if (entry_of[column] < 0)
+                              {
+                                entry_of[column] = row.size();
+                                row.emplace_back(column, 0.);
+                              }
+                            row[entry_of[column]].second += value;
+                          });
         for (unsigned int a = 0; a < coupling.n_modes(); ++a)
           if (coupling(i, a) != 0.)
             {
@@ -534,130 +538,53 @@ namespace mbfem
   }
 
 
+  template <int dim>
+  SemismoothNewton<dim>::~SemismoothNewton() = default;
+
+
 
   template <int dim>
   bool
-  ContactSolver<dim>::semismooth_newton(const unsigned int increment,
-                                        unsigned int      &iterations)
+  SemismoothNewton<dim>::solve(const Vector<double> &start,
+                               unsigned int         &iterations)
   {
     const unsigned int n_r = n_pairs * dim;
     const unsigned int n   = n_r + coupling.n_modes();
-    NewtonSystem       system;
-    system.broken = committed.broken;
-    set_newton_matrix(system);
-    // From the increment's bonded answer (every pair stuck), where it
-    // exists: Newton is local, and from the unloaded state it can end at
-    // an indeterminate answer, every pair slipping around a spinning
-    // block, which exists below the limit but is not what the load drives.
+    answer                 = std::make_unique<System>();
+    System &system         = *answer;
+    system.broken          = committed.broken;
+    set_matrix(system);
     system.u.reinit(n);
-    Trial          bonded = committed;
-    Vector<double> solution, displacement;
-    std::fill(bonded.state.begin(), bonded.state.end(), ContactState::stick);
-    if (solve_trial(bonded, solution, displacement))
+    if (start.size() == n)
       for (unsigned int i = 0; i < n; ++i)
-        system.u(i) = solution(i) * (i < n_r ? condensed->scale() : 1.);
-    else if (committed_solution.size() == n)
-      for (unsigned int i = 0; i < n; ++i)
-        system.u(i) =
-          committed_solution(i) * (i < n_r ? condensed->scale() : 1.);
+        system.u(i) = start(i) * (i < n_r ? interface.scale() : 1.);
 
     // Joints break one at a time, the one furthest beyond its tensile
     // limit first, and the system is solved again from where it was.
     for (unsigned int breaks = 0; breaks <= n_pairs; ++breaks)
       {
-        if (!newton_solve(system, iterations))
+        if (!solve_system(system, iterations))
           return false;
-        const unsigned int worst = newton_worst_tension(system);
+        const unsigned int worst = worst_tension(system);
         if (worst == numbers::invalid_unsigned_int)
           break;
         system.broken[worst] = true;
       }
-
-    const FastOutcome polish = fast_iteration(newton_states(system), increment);
-    iterations += polish.iterations;
-    return polish.converged && acceptable_answer();
+    return true;
   }
 
 
 
   template <int dim>
-  bool
-  ContactSolver<dim>::acceptable_answer() const
+  StateTrial<dim>
+  SemismoothNewton<dim>::answer_states() const
   {
-    // In 3D a block can be in equilibrium with every pair slipping below
-    // its limit: the slip directions, spread by the block's elastic
-    // deformation, hold it. mechanism() ignores that (it counts a slipping
-    // pair as no resistance), so such states name a mechanism. The answer
-    // stands if its slip is of the order of the blocks' deformation: the
-    // fast iteration's check has verified the forces within every pair's
-    // strength and the equilibrium is solved, so it is statically
-    // admissible; what is refused is the unbounded slip (1e7 m on issue
-    // 20's wedge) with which a linearised direction can make such states
-    // regular beyond a limit.
-    return mechanism(current).empty() || (dim == 3 && slip_is_elastic());
+    Assert(answer, ExcInternalError());
+    return states(*answer);
   }
 
 
 
-  template <int dim>
-  bool
-  ContactSolver<dim>::slip_is_elastic() const
-  {
-    // The deformation part of d: Delta_F + C_hat rho, without the rigid
-    // motions P_hat alpha.
-    Vector<double> forces(current_solution);
-    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-      forces(n_pairs * dim + a) = 0.;
-    const double elastic =
-      condensed->relative_displacement(forces, loads).linfty_norm();
-    double slip = 0.;
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      if (current.state[k] == ContactState::slip)
-        slip = std::max(slip, slip_increment(k).norm());
-    return slip <= internal::elastic_slip_factor * elastic;
-  }
-
-
-
-  template <int dim>
-  bool
-  ContactSolver<dim>::load_continuation(const unsigned int increment,
-                                        unsigned int      &iterations)
-  {
-    // The increment's load scaled up (its data extrapolated past s = 1),
-    // where a gap that a block must close by a rigid motion weighs less
-    // against the deformation, then brought back to s = 1 in steps, the
-    // fast iteration at each from the states of the last. Issue 20's
-    // toppling pair with a tenth of its weight in increment 1: the fast
-    // iteration concludes at ten times that load, and each step back in
-    // one iteration.
-    Trial trial  = committed;
-    bool  solved = true;
-    for (const double s : internal::continuation_fractions)
-      {
-        set_load_fraction(s);
-        const FastOutcome outcome = fast_iteration(trial, increment);
-        iterations += outcome.iterations;
-        solved = outcome.converged;
-        if (!solved)
-          break;
-        trial = current;
-      }
-    set_load_fraction(1.);
-    return solved && acceptable_answer();
-  }
-
-
-
-  // The members defined in this file (the class itself is instantiated in
-  // contact_solver.cc).
-#define MBFEM_INSTANTIATE(dim)                                         \
-  template bool ContactSolver<dim>::semismooth_newton(unsigned int,    \
-                                                      unsigned int &); \
-  template bool ContactSolver<dim>::slip_is_elastic() const;           \
-  template bool ContactSolver<dim>::load_continuation(unsigned int,    \
-                                                      unsigned int &);
-  MBFEM_INSTANTIATE(2)
-  MBFEM_INSTANTIATE(3)
-#undef MBFEM_INSTANTIATE
+  template class SemismoothNewton<2>;
+  template class SemismoothNewton<3>;
 } // namespace mbfem

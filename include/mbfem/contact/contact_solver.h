@@ -4,6 +4,7 @@
 #include <mbfem/block/block.h>
 #include <mbfem/contact/condensed_system.h>
 #include <mbfem/contact/contact_problem.h>
+#include <mbfem/contact/contact_state.h>
 #include <mbfem/contact/interface_system.h>
 #include <mbfem/contact/monolithic_system.h>
 #include <mbfem/contact/rigid_coupling.h>
@@ -29,17 +30,6 @@
 namespace mbfem
 {
   using namespace dealii;
-
-  /** The contact states of the paper's Table 1. */
-  enum class ContactState : unsigned char
-  {
-    stick,
-    slip,
-    open
-  };
-
-  std::string
-  to_string(const ContactState state);
 
   /**
    * How the interface system is solved: condensed to the contact DoFs
@@ -278,18 +268,7 @@ namespace mbfem
     last_iterations() const;
 
   private:
-    struct Trial
-    {
-      std::vector<ContactState>   state;
-      std::vector<bool>           broken;
-      std::vector<bool>           tensile_slip;   // slip with r_N < 0: no mu
-      std::vector<Tensor<1, dim>> slip_direction; // local, tangential
-      /**
-       * 3D: (c A + mu r_N) / |slip increment| at the last iterate, the
-       * weight of the linearised slip direction; 0 holds it fixed.
-       */
-      std::vector<double> direction_stiffness;
-    };
+    using Trial = StateTrial<dim>;
 
     /** "stick/slip/open a/b/c" of @p trial, for progress lines. */
     std::string
@@ -543,17 +522,18 @@ namespace mbfem
     run_load_path(const unsigned int increment);
 
     /**
-     * The semismooth Newton method (source/contact/semismooth_newton.cc),
-     * by default where the fast iteration and the load path both failed
-     * ('Contact/State method' sets the order): true if it
-     * found the increment's solution, which is then current; adds its
-     * Newton steps and the polishing fast iteration's to @p iterations.
+     * The semismooth Newton method (SemismoothNewton), by default where the
+     * fast iteration and the load path both failed ('Contact/State method'
+     * sets the order), from the increment's bonded answer; its states then
+     * polished by the fast iteration: true if that found the increment's
+     * solution, which is then current. Adds the Newton steps and the
+     * polishing fast iteration's to @p iterations.
      */
     bool
     semismooth_newton(const unsigned int increment, unsigned int &iterations);
 
     /**
-     * The load continuation (source/contact/semismooth_newton.cc): the
+     * The load continuation: the
      * fast iteration at 10, 5, 2 and 1 times the increment's load, each
      * from the states of the last; true if it concluded at 1 with an
      * acceptable answer, which is then current.
@@ -568,61 +548,6 @@ namespace mbfem
     bool
     acceptable_answer() const;
 
-    /** The unknowns, residual and Jacobian of semismooth_newton(). */
-    struct NewtonSystem;
-
-    /** Pair @p k is closed by its strength until it breaks. */
-    bool
-    newton_bilateral(const unsigned int       k,
-                     const std::vector<bool> &broken) const;
-
-    /** The rows of pair @p k: held directions, normal, then tangential. */
-    void
-    newton_pair_residual(const unsigned int k, NewtonSystem &system) const;
-
-    /** The friction disc's rows of pair @p k, radius from @p xi. */
-    void
-    newton_tangential_residual(const unsigned int k,
-                               const double       xi,
-                               const bool         xi_has_gap,
-                               NewtonSystem      &system) const;
-
-    /** The residual (and Jacobian, if asked) at system.u; 1/2 |F|^2. */
-    double
-    newton_residual(NewtonSystem &system) const;
-
-    /** Damped Newton on one system; false if it stalls or is singular. */
-    bool
-    newton_solve(NewtonSystem &system, unsigned int &iterations) const;
-
-    /**
-     * newton_solve()'s step: Newton's direction from the Jacobian (which
-     * it factorises), cut to @p trust, with backtracking; false if the
-     * Jacobian is singular or no length decreases 1/2 |F|^2.
-     */
-    bool
-    newton_line_search(NewtonSystem &system,
-                       const double  merit,
-                       const double  trust) const;
-
-    /**
-     * The Newton system's A from the blocks' flexibilities and the
-     * rigid-mode coupling, sparse: a pair's row holds the pairs of its two
-     * blocks only.
-     */
-    void
-    set_newton_matrix(NewtonSystem &system) const;
-
-    /** newton_solve()'s fallback step: Levenberg-Marquardt. */
-    bool
-    levenberg_marquardt_step(NewtonSystem &system,
-                             const double  merit,
-                             double       &damping) const;
-
-    /** The states (and slip directions) of the Newton answer. */
-    Trial
-    newton_states(const NewtonSystem &system) const;
-
     /**
      * Whether the current answer's largest slip increment is of the order
      * of the blocks' deformation (Delta_F + C_hat rho), not an unbounded
@@ -631,20 +556,6 @@ namespace mbfem
      */
     bool
     slip_is_elastic() const;
-
-    /** The largest force and displacement of @p system, in u's units. */
-    std::pair<double, double>
-    newton_scales(const NewtonSystem &system) const;
-
-    /** The friction disc's radius (times scale) of pair @p k at @p xi. */
-    double
-    newton_radius(const unsigned int  k,
-                  const double        xi,
-                  const NewtonSystem &system) const;
-
-    /** The unbroken pair furthest beyond its tensile limit, if any. */
-    unsigned int
-    newton_worst_tension(const NewtonSystem &system) const;
 
     /**
      * load_path(), its start: the load (s = 0) for which the committed

@@ -1,0 +1,146 @@
+#ifndef mbfem_contact_semismooth_newton_h
+#define mbfem_contact_semismooth_newton_h
+
+#include <mbfem/contact/condensed_system.h>
+#include <mbfem/contact/contact_state.h>
+#include <mbfem/contact/interface_system.h>
+#include <mbfem/contact/rigid_coupling.h>
+#include <mbfem/interface/contact_interface.h>
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /**
+   * The semismooth Newton method of the state iteration
+   * (doc/state_iteration.md): one load increment of the condensed system
+   * written as one nonsmooth system in (rho, alpha), the joint law by Alart
+   * and Curnier's projections, solved by Newton's method on its generalised
+   * Jacobian (sparse, NewtonJacobian) with a backtracking line search and
+   * Levenberg and Marquardt's step where that fails. Joints with strength
+   * break one at a time, the one furthest beyond its tensile limit first.
+   *
+   * It does not decide the increment: its answer gives states, which
+   * ContactSolver's fast iteration then solves and checks with the same
+   * tolerances as every other method.
+   */
+  template <int dim>
+  class SemismoothNewton
+  {
+  public:
+    /**
+     * The increment under @p loads from the committed states and relative
+     * displacements, on @p system (whose floating modes @p coupling
+     * describes). Everything is referenced, not copied: it must outlive
+     * this object.
+     */
+    SemismoothNewton(const std::vector<ContactPair<dim>>      &pairs,
+                     const CondensedSystem<dim>               &system,
+                     const RigidCoupling<dim>                 &coupling,
+                     const std::vector<std::array<bool, dim>> &held,
+                     const IncrementLoads                     &loads,
+                     const StateTrial<dim>                    &committed,
+                     const std::vector<Tensor<1, dim>> &committed_displacement);
+
+    ~SemismoothNewton();
+
+    /**
+     * Newton's method from (rho, alpha) = @p start (or from zero if
+     * @p start is empty); adds its steps to @p iterations. True if it
+     * converged, with the joints it broke on the way.
+     */
+    bool
+    solve(const Vector<double> &start, unsigned int &iterations);
+
+    /** The states (and slip directions) of solve()'s answer. */
+    StateTrial<dim>
+    answer_states() const;
+
+  private:
+    /** The unknowns u, the relative displacements, residual and Jacobian. */
+    struct System;
+
+    /** Pair @p k is closed by its strength until it breaks. */
+    bool
+    is_bilateral(const unsigned int k, const std::vector<bool> &broken) const;
+
+    /** The rows of pair @p k: held directions, normal, then tangential. */
+    void
+    pair_residual(const unsigned int k, System &system) const;
+
+    /** The friction disc's rows of pair @p k, radius from @p xi. */
+    void
+    tangential_residual(const unsigned int k,
+                        const double       xi,
+                        const bool         xi_has_gap,
+                        System            &system) const;
+
+    /** The residual (and Jacobian, if asked) at system.u; 1/2 |F|^2. */
+    double
+    evaluate(System &system) const;
+
+    /** Damped Newton on one system; false if it stalls or is singular. */
+    bool
+    solve_system(System &system, unsigned int &iterations) const;
+
+    /**
+     * solve_system()'s step: Newton's direction from the Jacobian (which
+     * it factorises), cut to @p trust, with backtracking; false if the
+     * Jacobian is singular or no length decreases 1/2 |F|^2.
+     */
+    bool
+    line_search(System &system, const double merit, const double trust) const;
+
+    /** solve_system()'s fallback step: Levenberg-Marquardt. */
+    bool
+    levenberg_marquardt_step(System      &system,
+                             const double merit,
+                             double      &damping) const;
+
+    /**
+     * The system's A from the blocks' flexibilities and the rigid-mode
+     * coupling, sparse: a pair's row holds the pairs of its two blocks
+     * only.
+     */
+    void
+    set_matrix(System &system) const;
+
+    /** The states (and slip directions) of @p system's answer. */
+    StateTrial<dim>
+    states(const System &system) const;
+
+    /** The largest force and displacement of @p system, in u's units. */
+    std::pair<double, double>
+    scales(const System &system) const;
+
+    /** The friction disc's radius (times scale) of pair @p k at @p xi. */
+    double
+    radius(const unsigned int k, const double xi, const System &system) const;
+
+    /** The unbroken pair furthest beyond its tensile limit, if any. */
+    unsigned int
+    worst_tension(const System &system) const;
+
+    const std::vector<ContactPair<dim>>      &pairs;
+    const CondensedSystem<dim>               &interface;
+    const RigidCoupling<dim>                 &coupling;
+    const std::vector<std::array<bool, dim>> &held;
+    const IncrementLoads                     &loads;
+    const StateTrial<dim>                    &committed;
+    const std::vector<Tensor<1, dim>>        &committed_displacement;
+    const unsigned int                        n_pairs;
+
+    /** solve()'s system and answer. */
+    std::unique_ptr<System> answer;
+  };
+} // namespace mbfem
+
+#endif
