@@ -252,7 +252,7 @@ namespace mbfem
                                              formulation,
                                              parameters.linear_solver.package,
                                              contact_parameters.state_system);
-      solver->set_state_methods(contact_parameters.state_methods);
+      solver->set_state_methods(contact_parameters.state_method);
       solver->setup(blocks);
       return solver;
     };

@@ -328,8 +328,8 @@ namespace mbfem
     CheckScales scales;
     scales.force                  = force_scale;
     scales.displacement           = displacement_scale;
-    scales.force_tolerance        = 1e-9 * force_scale;
-    scales.displacement_tolerance = 1e-9 * displacement_scale;
+    scales.force_tolerance        = state_tolerance * force_scale;
+    scales.displacement_tolerance = state_tolerance * displacement_scale;
     return scales;
   }
 
@@ -603,10 +603,11 @@ namespace mbfem
 
   template <int dim>
   void
-  ContactSolver<dim>::set_state_methods(const std::vector<StateMethod> &methods)
+  ContactSolver<dim>::set_state_methods(const StateMethodParameters &parameters)
   {
-    Assert(!methods.empty(), ExcInternalError());
-    state_methods = methods;
+    Assert(!parameters.methods.empty(), ExcInternalError());
+    Assert(!parameters.continuation_factors.empty(), ExcInternalError());
+    method_parameters = parameters;
   }
 
 
@@ -629,7 +630,8 @@ namespace mbfem
     // The monolithic formulation has the fast iteration only: the others
     // need C_hat and P_hat.
     const std::vector<StateMethod> methods =
-      monolithic ? std::vector<StateMethod>{StateMethod::fast} : state_methods;
+      monolithic ? std::vector<StateMethod>{StateMethod::fast} :
+                   method_parameters.methods;
     method          = methods.front();
     fast_iterations = 0;
     path_switches   = 0;
@@ -706,9 +708,13 @@ namespace mbfem
     const std::vector<Tensor<1, dim>> displacement = current_displacement;
     if (m == StateMethod::semismooth_newton)
       {
-        outcome.converged = semismooth_newton(increment, outcome.iterations);
-        outcome.failure   = head + ": the semismooth Newton method did not "
-                                   "converge.";
+        std::string why;
+        outcome.converged =
+          semismooth_newton(increment, outcome.iterations, why);
+        outcome.failure = head +
+                          ": the semismooth Newton method did not "
+                          "converge: " +
+                          why + ".";
       }
     else
       {
@@ -775,12 +781,6 @@ namespace mbfem
      * wedge).
      */
     constexpr double elastic_slip_factor = 1e3;
-    /**
-     * load_continuation()'s load fractions (of the increment, from the
-     * last converged state): from ten times the load back to it.
-     */
-    constexpr std::array<double, 4> continuation_fractions = {
-      {10., 5., 2., 1.}};
   } // namespace
 
 
@@ -788,7 +788,8 @@ namespace mbfem
   template <int dim>
   bool
   ContactSolver<dim>::semismooth_newton(const unsigned int increment,
-                                        unsigned int      &iterations)
+                                        unsigned int      &iterations,
+                                        std::string       &failure)
   {
     // From the increment's bonded answer (every pair stuck), where it
     // exists: Newton is local, and from the unloaded state it can end at
@@ -800,7 +801,8 @@ namespace mbfem
     if (!solve_trial(bonded, start, displacement))
       start = committed_solution;
 
-    SemismoothNewton<dim> newton(contact_pairs,
+    SemismoothNewton<dim> newton(method_parameters,
+                                 contact_pairs,
                                  *condensed,
                                  coupling,
                                  held,
@@ -808,11 +810,27 @@ namespace mbfem
                                  committed,
                                  committed_displacement);
     if (!newton.solve(start, iterations))
-      return false;
+      {
+        failure = newton.failure();
+        return false;
+      }
     const FastOutcome polish =
       fast_iteration(newton.answer_states(), increment);
     iterations += polish.iterations;
-    return polish.converged && acceptable_answer();
+    if (!polish.converged)
+      {
+        failure = "its states did not settle in the fast iteration that "
+                  "checks them";
+        return false;
+      }
+    // acceptable_answer(), its mechanism kept for the message.
+    const std::string moving = mechanism(current);
+    if (!moving.empty() && !(dim == 3 && slip_is_elastic()))
+      {
+        failure = "its states leave a mechanism:" + moving;
+        return false;
+      }
+    return true;
   }
 
 
@@ -870,7 +888,7 @@ namespace mbfem
     // one iteration.
     Trial trial  = committed;
     bool  solved = true;
-    for (const double s : continuation_fractions)
+    for (const double s : method_parameters.continuation_factors)
       {
         set_load_fraction(s);
         const FastOutcome outcome = fast_iteration(trial, increment);

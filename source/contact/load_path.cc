@@ -40,10 +40,10 @@ namespace mbfem
     constexpr unsigned int n_samples = 32;
     /**
      * A condition fails where its margin (force over the largest force,
-     * displacement over the largest displacement) is below this; check()
-     * decides with the same relative tolerance.
+     * displacement over the largest displacement) is below this: check()'s
+     * tolerance.
      */
-    constexpr double tolerance = 1e-9;
+    constexpr double tolerance = state_tolerance;
   } // namespace internal
 
   namespace

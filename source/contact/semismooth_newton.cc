@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
 #include <numeric>
+#include <sstream>
 
 // The semismooth Newton method of the contact state iteration
 // (doc/state_iteration.md, doc/decisions.md): by default the third method,
@@ -29,14 +31,6 @@ namespace mbfem
 {
   namespace internal
   {
-    /** Newton iterations per system, before the method gives up. */
-    constexpr unsigned int newton_max_iterations = 200;
-    /**
-     * Converged where every residual is below this times the largest force
-     * or displacement: far below check()'s 1e-9, so that the states read
-     * from the answer are those the check accepts.
-     */
-    constexpr double newton_tolerance = 1e-11;
     /** Armijo's sufficient decrease of the line search. */
     constexpr double armijo = 1e-4;
     /** Step halvings of the line search before a step is taken anyway. */
@@ -45,14 +39,25 @@ namespace mbfem
     constexpr double trust_factor = 1e3;
     /** Levenberg-Marquardt's smallest damping (relative to diag J^T J). */
     constexpr double initial_damping = 1e-10;
-    /** check()'s relative tolerance (contact_solver.cc, check_scales()). */
-    constexpr double check_tolerance = 1e-9;
   } // namespace internal
+
+  namespace
+  {
+    /** @p x to three significant digits, for messages. */
+    std::string
+    short_number(const double x)
+    {
+      std::ostringstream text;
+      text << std::setprecision(3) << x;
+      return text.str();
+    }
+  } // namespace
 
 
 
   template <int dim>
   SemismoothNewton<dim>::SemismoothNewton(
+    const StateMethodParameters              &parameters,
     const std::vector<ContactPair<dim>>      &pairs,
     const CondensedSystem<dim>               &system,
     const RigidCoupling<dim>                 &coupling,
@@ -60,7 +65,9 @@ namespace mbfem
     const IncrementLoads                     &loads,
     const StateTrial<dim>                    &committed,
     const std::vector<Tensor<1, dim>>        &committed_displacement)
-    : pairs(pairs)
+    : max_iterations(parameters.newton_max_iterations)
+    , tolerance(parameters.newton_tolerance)
+    , pairs(pairs)
     , interface(system)
     , coupling(coupling)
     , held(held)
@@ -85,6 +92,8 @@ namespace mbfem
     Vector<double>    u, d, residual;
     /** Whether evaluate() assembles the Jacobian too. */
     bool assemble = false;
+    /** Why solve_system() stopped short, for failure(). */
+    std::string failure;
 
     void
     add_unit(const unsigned int row, const unsigned int column, const double c)
@@ -306,13 +315,12 @@ namespace mbfem
       reference = std::max(reference, pair.initial_gap);
 
     double damping = internal::initial_damping;
-    for (unsigned int it = 0; it < internal::newton_max_iterations; ++it)
+    for (unsigned int it = 0; it < max_iterations; ++it)
       {
         system.assemble    = true;
         const double merit = evaluate(system);
         system.assemble    = false;
-        if (system.residual.linfty_norm() <=
-            internal::newton_tolerance * reference)
+        if (system.residual.linfty_norm() <= tolerance * reference)
           return true;
         ++iterations;
         // Newton's step where it decreases 1/2 |F|^2 (with backtracking,
@@ -322,8 +330,19 @@ namespace mbfem
           internal::trust_factor * std::max(reference, system.u.linfty_norm());
         if (!line_search(system, merit, trust) &&
             !levenberg_marquardt_step(system, merit, damping))
-          return false;
+          {
+            system.failure =
+              "no step decreased its residual (" +
+              short_number(system.residual.linfty_norm() / reference) +
+              " of the data) after " + std::to_string(it + 1) + " iterations";
+            return false;
+          }
       }
+    system.failure =
+      "it reached 'Contact/Semismooth Newton/Maximum iterations' (" +
+      std::to_string(max_iterations) + ") with its residual at " +
+      short_number(system.residual.linfty_norm() / reference) +
+      " of the data (tolerance " + short_number(tolerance) + ")";
     return false;
   }
 
@@ -422,11 +441,10 @@ namespace mbfem
     const double scale = interface.scale();
     // check()'s relative tolerance: a slip increment below it is none.
     const auto [force_scale, displacement_scale] = scales(system);
-    const double force_tolerance = internal::check_tolerance * force_scale;
-    const double displacement_tolerance =
-      internal::check_tolerance * displacement_scale;
-    StateTrial<dim> trial = committed;
-    trial.broken          = system.broken;
+    const double force_tolerance        = state_tolerance * force_scale;
+    const double displacement_tolerance = state_tolerance * displacement_scale;
+    StateTrial<dim> trial               = committed;
+    trial.broken                        = system.broken;
     for (unsigned int k = 0; k < n_pairs; ++k)
       {
         const auto        &pair = pairs[k];
@@ -487,7 +505,7 @@ namespace mbfem
         const double limit =
           interface.scale() * pair.joint.tensile_limit(pair.area, false);
         const double over = (-limit - system.u(k * dim)) / force;
-        if (over > internal::check_tolerance && over > excess)
+        if (over > state_tolerance && over > excess)
           {
             excess = over;
             worst  = k;
@@ -571,6 +589,15 @@ namespace mbfem
         system.broken[worst] = true;
       }
     return true;
+  }
+
+
+
+  template <int dim>
+  std::string
+  SemismoothNewton<dim>::failure() const
+  {
+    return answer ? answer->failure : std::string();
   }
 
 

@@ -84,4 +84,93 @@ namespace mbfem
       text += (text.empty() ? "" : ", ") + to_string(method);
     return text;
   }
+
+
+
+  void
+  StateMethodParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii;
+    prm.declare_entry(
+      "State method",
+      "fast, load path, semismooth Newton, load continuation",
+      Patterns::List(Patterns::Selection(state_method_names()), 1, 4),
+      "The methods of each increment's state iteration, tried in this "
+      "order until one concludes (doc/state_iteration.md). fast: assume "
+      "states, solve, check, switch every pair that fails its check. "
+      "load path: the increment's load applied in a continuous fraction, "
+      "one pair switching where its condition fails (condensed only). "
+      "semismooth Newton: the increment as one nonsmooth system with a "
+      "sparse Jacobian, its states then checked by a fast solve "
+      "(condensed only). load continuation: the fast iteration at each "
+      "of 'Load continuation/Load factors' times the increment's load (by "
+      "default ten times, then back to it in steps; condensed only). The monolithic formulation runs the fast iteration only. "
+      "Where none concludes, the verdict is that of the fast iteration "
+      "or the load path (no equilibrium if one met it). The order "
+      "matters where an increment has more than one solution: each "
+      "method may find another (doc/state_iteration.md).");
+    prm.enter_subsection("Semismooth Newton");
+    {
+      prm.declare_entry("Maximum iterations",
+                        "200",
+                        Patterns::Integer(1),
+                        "Newton iterations per system (the system is solved "
+                        "again each time a joint breaks) before the method "
+                        "gives up on the increment.");
+      prm.declare_entry(
+        "Tolerance",
+        "1e-11",
+        Patterns::Double(1e-15, 1e-9),
+        "Newton has converged where every residual is below this times the "
+        "largest force or displacement of the increment's data. At most "
+        "1e-9, the state check's tolerance, so that the states read from "
+        "Newton's answer are those the check accepts.");
+    }
+    prm.leave_subsection();
+    prm.enter_subsection("Load continuation");
+    {
+      prm.declare_entry(
+        "Load factors",
+        "10, 5, 2, 1",
+        Patterns::List(Patterns::Double(0.), 1),
+        "The increment's load, from the last converged state, times each "
+        "factor in turn, the fast iteration at each from the states of the "
+        "last; the last factor must be 1 (the increment's load).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  StateMethodParameters::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    methods = parse_state_methods(prm.get("State method"));
+    prm.enter_subsection("Semismooth Newton");
+    {
+      newton_max_iterations = prm.get_integer("Maximum iterations");
+      newton_tolerance      = prm.get_double("Tolerance");
+    }
+    prm.leave_subsection();
+    prm.enter_subsection("Load continuation");
+    {
+      continuation_factors.clear();
+      for (const std::string &factor :
+           dealii::Utilities::split_string_list(prm.get("Load factors")))
+        continuation_factors.push_back(
+          dealii::Utilities::string_to_double(factor));
+    }
+    prm.leave_subsection();
+    AssertThrow(continuation_factors.back() == 1.,
+                dealii::ExcMessage(
+                  "Contact/Load continuation/Load factors: the last factor "
+                  "must be 1, the increment's load (it is " +
+                  dealii::Utilities::to_string(continuation_factors.back()) +
+                  ")."));
+    AssertThrow(std::all_of(continuation_factors.begin(),
+                            continuation_factors.end(),
+                            [](const double f) { return f > 0.; }),
+                dealii::ExcMessage("Contact/Load continuation/Load factors: "
+                                   "every factor must be positive."));
+  }
 } // namespace mbfem

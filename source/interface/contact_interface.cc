@@ -100,7 +100,7 @@ namespace mbfem
         "switches per pair plus 100 (each switch changes one pair's state "
         "at the load where its condition is reached, so stopping early "
         "would leave the increment unsolved rather than solved worse), the "
-        "semismooth Newton method 200 iterations. The screen line and the "
+        "semismooth Newton method 'Semismooth Newton/Maximum iterations'. The screen line and the "
         "summary CSV count each method's iterations apart.");
       prm.declare_entry(
         "Formulation",
@@ -130,24 +130,6 @@ namespace mbfem
         "and at most a tenth of its entries can be non-zero, else dense. "
         "(The semismooth Newton method factorises its Jacobian sparse "
         "always.)");
-      prm.declare_entry(
-        "State method",
-        "fast, load path, semismooth Newton, load continuation",
-        Patterns::List(Patterns::Selection(state_method_names()), 1, 4),
-        "The methods of each increment's state iteration, tried in this "
-        "order until one concludes (doc/state_iteration.md). fast: assume "
-        "states, solve, check, switch every pair that fails its check. "
-        "load path: the increment's load applied in a continuous fraction, "
-        "one pair switching where its condition fails (condensed only). "
-        "semismooth Newton: the increment as one nonsmooth system with a "
-        "sparse Jacobian, its states then checked by a fast solve "
-        "(condensed only). load continuation: the fast iteration at ten "
-        "times the increment's load, then back to it in steps (condensed "
-        "only). The monolithic formulation runs the fast iteration only. "
-        "Where none concludes, the verdict is that of the fast iteration "
-        "or the load path (no equilibrium if one met it). The order "
-        "matters where an increment has more than one solution: each "
-        "method may find another (doc/state_iteration.md).");
     }
 
     /** Contact/Exact traction: 2D tractions to measure the pairs' against. */
@@ -185,6 +167,7 @@ namespace mbfem
     {
       declare_interface_entries(prm);
       declare_solver_entries(prm);
+      StateMethodParameters::declare_parameters(prm);
       declare_exact_traction_entries(prm);
     }
     prm.leave_subsection();
@@ -294,10 +277,10 @@ namespace mbfem
       search_distance          = prm.get_double("Search distance");
       max_iterations           = prm.get_integer("Maximum iterations");
       const std::string choice = prm.get("Formulation");
-      formulation   = (choice == "monolithic" ? Formulation::monolithic :
-                       choice == "both"       ? Formulation::both :
-                                                Formulation::condensed);
-      state_methods = parse_state_methods(prm.get("State method"));
+      formulation = (choice == "monolithic" ? Formulation::monolithic :
+                     choice == "both"       ? Formulation::both :
+                                              Formulation::condensed);
+      state_method.parse_parameters(prm);
       const std::string system = prm.get("State system");
       state_system             = (system == "dense"  ? StateSystem::dense :
                                   system == "sparse" ? StateSystem::sparse :

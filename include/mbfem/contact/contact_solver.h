@@ -132,11 +132,12 @@ namespace mbfem
 
     /**
      * The methods of the state iteration, in the order solve_increment()
-     * tries them ('Contact/State method'). The monolithic formulation has
-     * the fast iteration only: the others need C_hat and P_hat.
+     * tries them ('Contact/State method'), and their limits. The monolithic
+     * formulation has the fast iteration only: the others need C_hat and
+     * P_hat.
      */
     void
-    set_state_methods(const std::vector<StateMethod> &methods);
+    set_state_methods(const StateMethodParameters &parameters);
 
     /** Accepts the converged increment as the start of the next one. */
     void
@@ -527,10 +528,13 @@ namespace mbfem
      * sets the order), from the increment's bonded answer; its states then
      * polished by the fast iteration: true if that found the increment's
      * solution, which is then current. Adds the Newton steps and the
-     * polishing fast iteration's to @p iterations.
+     * polishing fast iteration's to @p iterations; says why not in
+     * @p failure.
      */
     bool
-    semismooth_newton(const unsigned int increment, unsigned int &iterations);
+    semismooth_newton(const unsigned int increment,
+                      unsigned int      &iterations,
+                      std::string       &failure);
 
     /**
      * The load continuation: the
@@ -667,12 +671,10 @@ namespace mbfem
     /** The load path: the loads of the increment at s = 1 and at s = 0. */
     IncrementLoads full_loads, start_loads;
 
-    std::vector<StateMethod> state_methods   = {StateMethod::fast,
-                                                StateMethod::load_path,
-                                                StateMethod::semismooth_newton,
-                                                StateMethod::load_continuation};
-    StateMethod              method          = StateMethod::fast;
-    unsigned int             fast_iterations = 0, path_switches = 0;
+    /** 'Contact/State method' and the methods' limits. */
+    StateMethodParameters method_parameters;
+    StateMethod           method          = StateMethod::fast;
+    unsigned int          fast_iterations = 0, path_switches = 0;
   };
 } // namespace mbfem
 

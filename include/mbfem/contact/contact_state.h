@@ -22,6 +22,15 @@ namespace mbfem
   to_string(const ContactState state);
 
   /**
+   * The state check's relative tolerance: a pair fails its condition where
+   * the violation exceeds this times the increment's largest force or
+   * displacement. Every method reads states with it (the fast iteration's
+   * check, the load path's margins, the Newton answer's states), so that
+   * they decide alike.
+   */
+  constexpr double state_tolerance = 1e-9;
+
+  /**
    * The states of every pair that a step of the state iteration assumes,
    * with what the joint law needs besides: whether a joint has broken,
    * slips in tension (no friction), and in 3D the slip direction and its

@@ -5,6 +5,7 @@
 #include <mbfem/contact/contact_state.h>
 #include <mbfem/contact/interface_system.h>
 #include <mbfem/contact/rigid_coupling.h>
+#include <mbfem/contact/state_method.h>
 #include <mbfem/interface/contact_interface.h>
 
 #include <deal.II/base/tensor.h>
@@ -12,6 +13,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -38,11 +40,12 @@ namespace mbfem
   public:
     /**
      * The increment under @p loads from the committed states and relative
-     * displacements, on @p system (whose floating modes @p coupling
+     * displacements, with the limits of @p parameters, on @p system (whose floating modes @p coupling
      * describes). Everything is referenced, not copied: it must outlive
      * this object.
      */
-    SemismoothNewton(const std::vector<ContactPair<dim>>      &pairs,
+    SemismoothNewton(const StateMethodParameters              &parameters,
+                     const std::vector<ContactPair<dim>>      &pairs,
                      const CondensedSystem<dim>               &system,
                      const RigidCoupling<dim>                 &coupling,
                      const std::vector<std::array<bool, dim>> &held,
@@ -59,6 +62,10 @@ namespace mbfem
      */
     bool
     solve(const Vector<double> &start, unsigned int &iterations);
+
+    /** Why solve() failed: the iteration limit, or no descent. */
+    std::string
+    failure() const;
 
     /** The states (and slip directions) of solve()'s answer. */
     StateTrial<dim>
@@ -129,6 +136,8 @@ namespace mbfem
     unsigned int
     worst_tension(const System &system) const;
 
+    const unsigned int                        max_iterations;
+    const double                              tolerance;
     const std::vector<ContactPair<dim>>      &pairs;
     const CondensedSystem<dim>               &interface;
     const RigidCoupling<dim>                 &coupling;

@@ -1,6 +1,8 @@
 #ifndef mbfem_contact_state_method_h
 #define mbfem_contact_state_method_h
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <string>
 #include <vector>
 
@@ -49,6 +51,48 @@ namespace mbfem
   /** The list as 'Contact/State method' writes it. */
   std::string
   to_string(const std::vector<StateMethod> &methods);
+
+
+
+  /**
+   * Which methods the state iteration tries, and the limits of those that
+   * have any ('Contact/State method', 'Contact/Semismooth Newton',
+   * 'Contact/Load continuation'). The fast iteration's limit is
+   * 'Contact/Maximum iterations'; the load path's follows from the number
+   * of pairs (doc/state_iteration.md).
+   */
+  struct StateMethodParameters
+  {
+    /** Declares the entries in the subsection 'Contact' (entered). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /** Reads them, in the subsection 'Contact' (entered). */
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /** The methods, in the order tried. */
+    std::vector<StateMethod> methods = {StateMethod::fast,
+                                        StateMethod::load_path,
+                                        StateMethod::semismooth_newton,
+                                        StateMethod::load_continuation};
+
+    /** Newton iterations per system before the method gives up. */
+    unsigned int newton_max_iterations = 200;
+    /**
+     * Newton converged where every residual is below this times the
+     * largest force or displacement of the increment's data: far below the
+     * state check's 1e-9, so that the states read from the answer are
+     * those the check accepts.
+     */
+    double newton_tolerance = 1e-11;
+    /**
+     * The load continuation's load factors (of the increment, from the
+     * last converged state), the last 1: from ten times the load back to
+     * it.
+     */
+    std::vector<double> continuation_factors = {10., 5., 2., 1.};
+  };
 } // namespace mbfem
 
 #endif

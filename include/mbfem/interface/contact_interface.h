@@ -87,11 +87,8 @@ namespace mbfem
     };
     StateSystem state_system = StateSystem::automatic;
 
-    /** The methods of the state iteration, in the order tried. */
-    std::vector<StateMethod> state_methods = {StateMethod::fast,
-                                              StateMethod::load_path,
-                                              StateMethod::semismooth_newton,
-                                              StateMethod::load_continuation};
+    /** The methods of the state iteration and their limits. */
+    StateMethodParameters state_method;
 
     /** Whether the condensed (multi-body) formulation runs. */
     bool
