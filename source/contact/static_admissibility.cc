@@ -235,10 +235,12 @@ namespace mbfem
   StaticAdmissibility<dim>::strength_of(const Candidate &pair,
                                         const double     factor) const
   {
-    const double area = pair.area / force_scale;
-    return {{pair.joint.friction_coefficient / factor,
-             (pair.broken ? 0. : pair.joint.cohesion / factor) * area,
-             (pair.broken ? 0. : pair.joint.tensile_strength / factor) * area}};
+    // Strength reduction is JointLaw's: tan(phi), c and sigma_t over F.
+    const JointLaw law  = pair.joint.reduced(factor);
+    const double   area = pair.area / force_scale;
+    return {{law.friction_coefficient,
+             law.shear_strength(0., area, pair.broken),
+             law.tensile_limit(area, pair.broken)}};
   }
 
 
@@ -367,8 +369,9 @@ namespace mbfem
           tangential += w[k * dim + d] * w[k * dim + d];
         tangential = std::sqrt(tangential);
         // The friction of the LP the duals came from.
-        const double mu   = candidates[k].joint.friction_coefficient / factor;
-        const bool   rest = std::abs(w[k * dim]) + tangential <= tolerance;
+        const double mu =
+          candidates[k].joint.reduced(factor).friction_coefficient;
+        const bool rest = std::abs(w[k * dim]) + tangential <= tolerance;
         // (In 3D the polygon's dual cone reaches up to 1 / cos(pi / n)
         // beyond the circle's, between two facets.)
         const double polygon =
