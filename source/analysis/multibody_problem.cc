@@ -1194,8 +1194,13 @@ namespace mbfem
                       (reference ? " with the monolithic reference" : "") +
                       "; slip = tangential relative displacement; seconds = "
                       "wall time of the increment's contact iterations; "
-                      "method = which state iteration concluded the "
-                      "increment (fast or load path)\n";
+                      "method = the state method that concluded the "
+                      "increment (fast, load path, semismooth Newton or "
+                      "load continuation); fast_iterations = the fast "
+                      "iteration's; path_switches = the concluding "
+                      "method's iterations, if not the fast iteration's, "
+                      "with those of its final fast iteration (load path "
+                      "switches, Newton steps, continuation iterations)\n";
         summary_csv += "increment,t,iterations,stick,slip,open,max_gap,"
                        "max_slip,max_normal_traction,seconds,method,"
                        "fast_iterations,path_switches";

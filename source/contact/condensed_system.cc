@@ -464,7 +464,7 @@ namespace mbfem
     for (unsigned int i = 0; i < n_rho; ++i)
       column_of[unknowns[i]] = i;
 
-    // The rows of assemble_condensed(), with C_hat's entries only where
+    // The rows of assemble(), with C_hat's entries only where
     // two pairs share a block (H_b of that block), each gathered through
     // entry_of (a row's entry of each column, -1 for none) in the order
     // the terms come, so that every sum is that of the dense assembly.

@@ -2,18 +2,13 @@
 #include <mbfem/contact/contact_solver.h>
 #include <mbfem/contact/semismooth_newton.h>
 
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
 #include <iomanip>
-#include <map>
-#include <numeric>
 #include <set>
 #include <sstream>
 
@@ -58,18 +53,19 @@ namespace mbfem
   {
     if (formulation == ContactFormulation::monolithic)
       {
-        auto system_ = std::make_unique<MonolithicSystem<dim>>(contact_pairs,
-                                                               solver_package);
-        monolithic   = system_.get();
-        system       = std::move(system_);
+        auto new_system =
+          std::make_unique<MonolithicSystem<dim>>(contact_pairs,
+                                                  solver_package);
+        monolithic = new_system.get();
+        system     = std::move(new_system);
       }
     else
       {
-        auto system_ = std::make_unique<CondensedSystem<dim>>(contact_pairs,
-                                                              coupling,
-                                                              state_system);
-        condensed    = system_.get();
-        system       = std::move(system_);
+        auto new_system = std::make_unique<CondensedSystem<dim>>(contact_pairs,
+                                                                 coupling,
+                                                                 state_system);
+        condensed       = new_system.get();
+        system          = std::move(new_system);
       }
     committed.state.resize(n_pairs);
     committed.broken.assign(n_pairs, false);
@@ -637,6 +633,9 @@ namespace mbfem
     path_switches   = 0;
     MethodOutcome verdict;
     bool          verdict_is_primary = false;
+    // Why the semismooth Newton method and the continuation failed, said
+    // after the verdict where it is another method's.
+    std::vector<std::string> secondary;
     for (const StateMethod m : methods)
       {
         method = m; // the one running, for the progress line
@@ -650,6 +649,8 @@ namespace mbfem
           }
         const bool primary =
           m == StateMethod::fast || m == StateMethod::load_path;
+        if (!primary)
+          secondary.push_back(outcome.failure);
         if (outcome.no_equilibrium ||
             (!verdict.no_equilibrium && (primary || !verdict_is_primary)))
           {
@@ -657,6 +658,9 @@ namespace mbfem
             verdict_is_primary = verdict_is_primary || primary;
           }
       }
+    for (const std::string &failure : secondary)
+      if (failure != verdict.failure)
+        verdict.failure += "\n    " + failure;
     AssertThrow(!verdict.no_equilibrium,
                 Exceptions::ExcNoEquilibrium(verdict.failure));
     AssertThrow(false, Exceptions::ExcIncrementNotConverged(verdict.failure));
@@ -711,10 +715,8 @@ namespace mbfem
         std::string why;
         outcome.converged =
           semismooth_newton(increment, outcome.iterations, why);
-        outcome.failure = head +
-                          ": the semismooth Newton method did not "
-                          "converge: " +
-                          why + ".";
+        outcome.failure = head + ": the semismooth Newton method " + why +
+                          (why.back() == '.' ? "" : ".");
       }
     else
       {
@@ -811,7 +813,7 @@ namespace mbfem
                                  committed_displacement);
     if (!newton.solve(start, iterations))
       {
-        failure = newton.failure();
+        failure = "did not converge: " + newton.failure();
         return false;
       }
     const FastOutcome polish =
@@ -819,15 +821,17 @@ namespace mbfem
     iterations += polish.iterations;
     if (!polish.converged)
       {
-        failure = "its states did not settle in the fast iteration that "
-                  "checks them";
+        failure = "converged, but its states did not settle in the fast "
+                  "iteration that checks them";
         return false;
       }
     // acceptable_answer(), its mechanism kept for the message.
     const std::string moving = mechanism(current);
     if (!moving.empty() && !(dim == 3 && slip_is_elastic()))
       {
-        failure = "its states leave a mechanism:" + moving;
+        failure = "converged, but its answer was refused: its states leave "
+                  "a mechanism:" +
+                  moving;
         return false;
       }
     return true;

@@ -68,7 +68,7 @@ namespace mbfem
     : max_iterations(parameters.newton_max_iterations)
     , tolerance(parameters.newton_tolerance)
     , pairs(pairs)
-    , interface(system)
+    , condensed(system)
     , coupling(coupling)
     , held(held)
     , loads(loads)
@@ -144,7 +144,7 @@ namespace mbfem
     const double cohesion = is_bilateral(k, system.broken) ?
                               pair.joint.shear_strength(0., pair.area, false) :
                               0.;
-    return interface.scale() * cohesion +
+    return condensed.scale() * cohesion +
            pair.joint.friction_coefficient * std::max(xi, 0.);
   }
 
@@ -285,7 +285,7 @@ namespace mbfem
     // The floating blocks' equilibrium, P^T r + F_e = 0, times scale.
     for (unsigned int a = 0; a < coupling.n_modes(); ++a)
       {
-        double value = interface.scale() * loads.resultant[a];
+        double value = condensed.scale() * loads.resultant[a];
         for (const auto &[j, c] : system.coupling_column[a])
           {
             value += c * system.u(j);
@@ -310,7 +310,7 @@ namespace mbfem
     for (unsigned int i = 0; i < n_r; ++i)
       reference = std::max(reference, std::abs(loads.displacement(i)));
     for (const double f : loads.resultant)
-      reference = std::max(reference, interface.scale() * std::abs(f));
+      reference = std::max(reference, condensed.scale() * std::abs(f));
     for (const auto &pair : pairs)
       reference = std::max(reference, pair.initial_gap);
 
@@ -328,13 +328,14 @@ namespace mbfem
         // Marquardt's, which always can.
         const double trust =
           internal::trust_factor * std::max(reference, system.u.linfty_norm());
+        const double residual = system.residual.linfty_norm();
         if (!line_search(system, merit, trust) &&
             !levenberg_marquardt_step(system, merit, damping))
           {
-            system.failure =
-              "no step decreased its residual (" +
-              short_number(system.residual.linfty_norm() / reference) +
-              " of the data) after " + std::to_string(it + 1) + " iterations";
+            system.failure = "no step decreased its residual (" +
+                             short_number(residual / reference) +
+                             " of the data) after " + std::to_string(it + 1) +
+                             " iterations";
             return false;
           }
       }
@@ -426,7 +427,7 @@ namespace mbfem
         displacement = std::max(displacement, std::abs(system.d(i)));
       }
     for (const double f : loads.resultant)
-      force = std::max(force, interface.scale() * std::abs(f));
+      force = std::max(force, condensed.scale() * std::abs(f));
     for (const auto &pair : pairs)
       displacement = std::max(displacement, pair.initial_gap);
     return {force, displacement};
@@ -438,7 +439,7 @@ namespace mbfem
   StateTrial<dim>
   SemismoothNewton<dim>::states(const System &system) const
   {
-    const double scale = interface.scale();
+    const double scale = condensed.scale();
     // check()'s relative tolerance: a slip increment below it is none.
     const auto [force_scale, displacement_scale] = scales(system);
     const double force_tolerance        = state_tolerance * force_scale;
@@ -503,7 +504,7 @@ namespace mbfem
         if (pair.tied || held[k][0] || !is_bilateral(k, system.broken))
           continue;
         const double limit =
-          interface.scale() * pair.joint.tensile_limit(pair.area, false);
+          condensed.scale() * pair.joint.tensile_limit(pair.area, false);
         const double over = (-limit - system.u(k * dim)) / force;
         if (over > state_tolerance && over > excess)
           {
@@ -531,7 +532,7 @@ namespace mbfem
     for (unsigned int i = 0; i < n_r; ++i)
       {
         auto &row = rows[i];
-        interface.add_row(i / dim,
+        condensed.add_row(i / dim,
                           i % dim,
                           1.,
                           every_column,
@@ -575,7 +576,7 @@ namespace mbfem
     system.u.reinit(n);
     if (start.size() == n)
       for (unsigned int i = 0; i < n; ++i)
-        system.u(i) = start(i) * (i < n_r ? interface.scale() : 1.);
+        system.u(i) = start(i) * (i < n_r ? condensed.scale() : 1.);
 
     // Joints break one at a time, the one furthest beyond its tensile
     // limit first, and the system is solved again from where it was.

@@ -1,3 +1,4 @@
+#include <mbfem/contact/contact_state.h>
 #include <mbfem/contact/state_method.h>
 
 #include <deal.II/base/exceptions.h>
@@ -104,7 +105,8 @@ namespace mbfem
       "sparse Jacobian, its states then checked by a fast solve "
       "(condensed only). load continuation: the fast iteration at each "
       "of 'Load continuation/Load factors' times the increment's load (by "
-      "default ten times, then back to it in steps; condensed only). The monolithic formulation runs the fast iteration only. "
+      "default ten times, then back to it in steps; condensed only). The "
+      "monolithic formulation runs the fast iteration only. "
       "Where none concludes, the verdict is that of the fast iteration "
       "or the load path (no equilibrium if one met it). The order "
       "matters where an increment has more than one solution: each "
@@ -120,7 +122,7 @@ namespace mbfem
       prm.declare_entry(
         "Tolerance",
         "1e-11",
-        Patterns::Double(1e-15, 1e-9),
+        Patterns::Double(1e-15, state_tolerance),
         "Newton has converged where every residual is below this times the "
         "largest force or displacement of the increment's data. At most "
         "1e-9, the state check's tolerance, so that the states read from "

@@ -100,8 +100,9 @@ namespace mbfem
         "switches per pair plus 100 (each switch changes one pair's state "
         "at the load where its condition is reached, so stopping early "
         "would leave the increment unsolved rather than solved worse), the "
-        "semismooth Newton method 'Semismooth Newton/Maximum iterations'. The screen line and the "
-        "summary CSV count each method's iterations apart.");
+        "semismooth Newton method 'Semismooth Newton/Maximum iterations'. "
+        "The screen line and the summary CSV count each method's "
+        "iterations apart.");
       prm.declare_entry(
         "Formulation",
         "condensed",

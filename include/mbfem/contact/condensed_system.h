@@ -72,10 +72,6 @@ namespace mbfem
     double
     scale() const;
 
-    /** C_hat(k * dim + i, l * dim + j), from the blocks' H_b. */
-    double
-    entry(const unsigned int row, const unsigned int column) const;
-
     /**
      * Calls @p add(column, value) with @p factor times row (k, e) of
      * C_hat / scale(), over the columns (@p column_of) of the unknowns: a
@@ -139,6 +135,10 @@ namespace mbfem
 
     /** A row of a sparse system: (column, value). */
     using SparseRow = std::vector<std::pair<unsigned int, double>>;
+
+    /** C_hat(k * dim + i, l * dim + j), from the blocks' H_b. */
+    double
+    entry(const unsigned int row, const unsigned int column) const;
 
     /** setup(), per block: the pair sides on @p block (number @p b), H_b. */
     void

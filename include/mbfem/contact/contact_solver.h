@@ -15,12 +15,7 @@
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/lapack_full_matrix.h>
-#include <deal.II/lac/sparse_direct.h>
 
-#include <functional>
-#include <map>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -70,8 +65,10 @@ namespace mbfem
 
 
   /**
-   * The interface system of the multi-body method (paper eqs. 7-10, 15 and
-   * Table 1), generalised to any number of blocks and to 3D.
+   * The contact solve of the multi-body method (paper eqs. 7-10, 15 and
+   * Table 1), generalised to any number of blocks and to 3D: the state
+   * iteration on an InterfaceSystem, its entry point and its results
+   * (doc/contact_solver.md).
    *
    * With r_k the force of pair k on its block b (and -r_k on block a), the
    * relative displacement of the pairs is
@@ -85,12 +82,16 @@ namespace mbfem
    * (normal, tangents). Each state gives its equations (stick: no normal
    * gap, no tangential increment; slip: no normal gap, |r_T| = c A + mu r_N
    * against the slip; open: r = 0); the states are iterated within a load
-   * increment until every pair satisfies its check.
+   * increment until every pair satisfies its check. The system that gives
+   * d for a trial's equations is a CondensedSystem (C_a, P, as above).
    *
    * With ContactFormulation::monolithic the same state iteration runs on
    * the same PairEquation rows, but d comes from a monolithic
    * Lagrange-multiplier system of all blocks (MonolithicSystem) instead of
    * C_a and P: a second road to the same discrete solution.
+   *
+   * Not copyable or movable: its interface system refers to its pairs and
+   * coupling.
    */
   template <int dim>
   class ContactSolver
@@ -103,6 +104,10 @@ namespace mbfem
       const std::string            &solver_package = "Amesos_Klu",
       const ContactParameters::StateSystem state_system =
         ContactParameters::StateSystem::automatic);
+
+    ContactSolver(const ContactSolver &) = delete;
+    ContactSolver &
+    operator=(const ContactSolver &) = delete;
 
     /**
      * Condensed: the dense flexibility C_a and coupling P, from every
@@ -537,9 +542,9 @@ namespace mbfem
                       std::string       &failure);
 
     /**
-     * The load continuation: the
-     * fast iteration at 10, 5, 2 and 1 times the increment's load, each
-     * from the states of the last; true if it concluded at 1 with an
+     * The load continuation: the fast iteration at each of 'Contact/Load
+     * continuation/Load factors' (10, 5, 2, 1) times the increment's load,
+     * each from the states of the last; true if it concluded at 1 with an
      * acceptable answer, which is then current.
      */
     bool

@@ -40,9 +40,9 @@ namespace mbfem
   public:
     /**
      * The increment under @p loads from the committed states and relative
-     * displacements, with the limits of @p parameters, on @p system (whose floating modes @p coupling
-     * describes). Everything is referenced, not copied: it must outlive
-     * this object.
+     * displacements, with the limits of @p parameters, on @p system (whose
+     * floating modes @p coupling describes). Everything is referenced, not
+     * copied: it must outlive this object.
      */
     SemismoothNewton(const StateMethodParameters              &parameters,
                      const std::vector<ContactPair<dim>>      &pairs,
@@ -139,7 +139,7 @@ namespace mbfem
     const unsigned int                        max_iterations;
     const double                              tolerance;
     const std::vector<ContactPair<dim>>      &pairs;
-    const CondensedSystem<dim>               &interface;
+    const CondensedSystem<dim>               &condensed;
     const RigidCoupling<dim>                 &coupling;
     const std::vector<std::array<bool, dim>> &held;
     const IncrementLoads                     &loads;
