@@ -339,6 +339,10 @@ namespace mbfem
             return false;
           }
       }
+    // The last step's residual, which the loop has not tested.
+    evaluate(system);
+    if (system.residual.linfty_norm() <= tolerance * reference)
+      return true;
     system.failure =
       "it reached 'Contact/Semismooth Newton/Maximum iterations' (" +
       std::to_string(max_iterations) + ") with its residual at " +
