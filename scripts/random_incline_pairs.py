@@ -710,8 +710,13 @@ def check_problem(run, timeout=300):
         return "check: undecided in %d s" % timeout
     verdict = [line for line in r.stdout.splitlines()
                if line.startswith("verdict")]
-    return "check (exit %d): %s" % (
-        r.returncode, verdict[-1] if verdict else "no verdict")
+    if not verdict:
+        # Not a verdict: the check itself failed (its exit code 2 is then
+        # also Python's for a script it cannot open).
+        error = r.stderr.strip().splitlines()
+        return "check did not run to a verdict (exit %d): %s" % (
+            r.returncode, error[-1] if error else "no output")
+    return "check (exit %d): %s" % (r.returncode, verdict[-1])
 
 
 def campaign_variant(mbfem, work, i, m, variant):
@@ -866,8 +871,10 @@ def main():
         if args.check_failures and lam < 1.:
             verdict = check_problem(run)
             print("    %s" % verdict, flush=True)
-            kind = ("model's (no solution)" if "(exit 2)" in verdict else
-                    "solver's (a solution exists)" if "(exit 0)" in verdict
+            kind = ("model's (no solution)"
+                    if "(exit 2): verdict: no solution" in verdict else
+                    "solver's (a solution exists)"
+                    if "(exit 0): verdict: a solution exists" in verdict
                     else "undecided")
             key = (kind, "below" if lam < 1. else "beyond")
             verdicts[key] = verdicts.get(key, 0) + 1
