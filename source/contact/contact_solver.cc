@@ -825,9 +825,8 @@ namespace mbfem
                   "iteration that checks them";
         return false;
       }
-    // acceptable_answer(), its mechanism kept for the message.
-    const std::string moving = mechanism(current);
-    if (!moving.empty() && !(dim == 3 && slip_is_elastic()))
+    const std::string moving = refused_mechanism();
+    if (!moving.empty())
       {
         failure = "converged, but its answer was refused: its states leave "
                   "a mechanism:" +
@@ -840,8 +839,8 @@ namespace mbfem
 
 
   template <int dim>
-  bool
-  ContactSolver<dim>::acceptable_answer() const
+  std::string
+  ContactSolver<dim>::refused_mechanism() const
   {
     // In 3D a block can be in equilibrium with every pair slipping below
     // its limit: the slip directions, spread by the block's elastic
@@ -853,7 +852,10 @@ namespace mbfem
     // admissible; what is refused is the unbounded slip (1e7 m on issue
     // 20's wedge) with which a linearised direction can make such states
     // regular beyond a limit.
-    return mechanism(current).empty() || (dim == 3 && slip_is_elastic());
+    const std::string moving = mechanism(current);
+    if (moving.empty() || (dim == 3 && slip_is_elastic()))
+      return "";
+    return moving;
   }
 
 
@@ -903,7 +905,7 @@ namespace mbfem
         trial = current;
       }
     set_load_fraction(1.);
-    return solved && acceptable_answer();
+    return solved && refused_mechanism().empty();
   }
 
 

@@ -551,11 +551,12 @@ namespace mbfem
     load_continuation(const unsigned int increment, unsigned int &iterations);
 
     /**
-     * Whether the current answer of the Newton method or the continuation
-     * stands: its states leave no mechanism, or (3D) its slip is elastic.
+     * The mechanism for which the current answer of the Newton method or
+     * the continuation is refused; empty if it stands: its states leave no
+     * mechanism, or (3D) its slip is elastic.
      */
-    bool
-    acceptable_answer() const;
+    std::string
+    refused_mechanism() const;
 
     /**
      * Whether the current answer's largest slip increment is of the order
