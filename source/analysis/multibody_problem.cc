@@ -597,6 +597,16 @@ namespace mbfem
                   "(statics cannot prove that the elastic model has a "
                   "solution; doc/contact_problems.md says how to check the "
                   "increment's problem).";
+          // Where nothing can break, what is left is the solver or
+          // friction beyond the existence result's conditions
+          // (doc/decisions.md).
+          if (!contact->has_strength_to_lose())
+            why += " No joint of this increment has cohesion or tensile "
+                   "strength to lose, so breaking is not the reason; what "
+                   "is left is the solver, or friction beyond the "
+                   "conditions of the existence result (doc/decisions.md, "
+                   "\"A method that concludes\"): check the increment's "
+                   "problem with another solver, or report it.";
           throw Exceptions::ExcNotConvergedButAdmissible(text.str() + why);
         }
       throw Exceptions::ExcIncrementNotConverged(text.str());
@@ -1195,12 +1205,13 @@ namespace mbfem
                       "; slip = tangential relative displacement; seconds = "
                       "wall time of the increment's contact iterations; "
                       "method = the state method that concluded the "
-                      "increment (fast, load path, semismooth Newton or "
-                      "load continuation); fast_iterations = the fast "
-                      "iteration's; path_switches = the concluding "
-                      "method's iterations, if not the fast iteration's, "
-                      "with those of its final fast iteration (load path "
-                      "switches, Newton steps, continuation iterations)\n";
+                      "increment (fast, load path, semismooth Newton, "
+                      "Lemke or load continuation); fast_iterations = "
+                      "the fast iteration's; path_switches = the "
+                      "concluding method's iterations, if not the fast "
+                      "iteration's, with those of its final fast "
+                      "iteration (load path switches, Lemke pivots, "
+                      "Newton steps, continuation iterations)\n";
         summary_csv += "increment,t,iterations,stick,slip,open,max_gap,"
                        "max_slip,max_normal_traction,seconds,method,"
                        "fast_iterations,path_switches";

@@ -149,7 +149,8 @@ namespace mbfem
   ContactProblem<dim>
   ContactSolver<dim>::condensed_problem(const unsigned int increment,
                                         const double       time,
-                                        const bool         solved) const
+                                        const bool         solved,
+                                        const bool with_flexibility) const
   {
     AssertThrow(!monolithic,
                 ExcMessage("Output/Write contact problems: the condensed "
@@ -163,7 +164,8 @@ namespace mbfem
     problem.n_alpha    = coupling.n_modes();
     const unsigned n_r = n_pairs * dim;
     // W = C_hat: the sum over the blocks two pairs share of H_b.
-    condensed->add_entries(problem.W);
+    if (with_flexibility)
+      condensed->add_entries(problem.W);
     problem.G.reinit(n_r, coupling.n_modes());
     for (unsigned int i = 0; i < n_r; ++i)
       for (unsigned int a = 0; a < coupling.n_modes(); ++a)
@@ -223,9 +225,11 @@ namespace mbfem
   template ContactProblem<2>
   ContactSolver<2>::condensed_problem(const unsigned int,
                                       const double,
+                                      const bool,
                                       const bool) const;
   template ContactProblem<3>
   ContactSolver<3>::condensed_problem(const unsigned int,
                                       const double,
+                                      const bool,
                                       const bool) const;
 } // namespace mbfem

@@ -1,5 +1,6 @@
 #include <mbfem/base/exceptions.h>
 #include <mbfem/contact/contact_solver.h>
+#include <mbfem/contact/lemke_method.h>
 #include <mbfem/contact/semismooth_newton.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -619,9 +620,9 @@ namespace mbfem
 
     // The methods in their order until one concludes (by default the fast
     // iteration, which concludes nearly every increment in a few solves,
-    // then the load path, the semismooth Newton method and the load
-    // continuation). The verdict where none does: "no equilibrium" if a
-    // method met one (the last such), else the last failure of the fast
+    // then the load path, the semismooth Newton method, Lemke's method and
+    // the load continuation). The verdict where none does: "no equilibrium" if
+    // a method met one (the last such), else the last failure of the fast
     // iteration or the load path, else the others'.
     // The monolithic formulation has the fast iteration only: the others
     // need C_hat and P_hat.
@@ -633,8 +634,9 @@ namespace mbfem
     path_switches   = 0;
     MethodOutcome verdict;
     bool          verdict_is_primary = false;
-    // Why the semismooth Newton method and the continuation failed, said
-    // after the verdict where it is another method's.
+    // Why Lemke's method, the semismooth Newton method and the
+    // continuation failed, said after the verdict where it is another
+    // method's.
     std::vector<std::string> secondary;
     for (const StateMethod m : methods)
       {
@@ -701,22 +703,27 @@ namespace mbfem
     if (m == StateMethod::load_path)
       return run_load_path(increment);
 
-    // The semismooth Newton method and the load continuation: where they
-    // fail, the states stay as the methods before them left them. The
-    // continuation scales the increment's load from the path's start (set
-    // again, as the same, if the path ran).
+    // Lemke's method, the semismooth Newton method and the load
+    // continuation: where they fail, the states stay as the methods before them
+    // left them. The continuation scales the increment's load from the path's
+    // start (set again, as the same, if the path ran).
     set_path_start();
     set_load_fraction(1.);
     const Trial                       trial        = current;
     const Vector<double>              solution     = current_solution;
     const std::vector<Tensor<1, dim>> displacement = current_displacement;
-    if (m == StateMethod::semismooth_newton)
+    if (m == StateMethod::semismooth_newton || m == StateMethod::lemke)
       {
         std::string why;
         outcome.converged =
-          semismooth_newton(increment, outcome.iterations, why);
-        outcome.failure = head + ": the semismooth Newton method " + why +
-                          (why.back() == '.' ? "" : ".");
+          (m == StateMethod::lemke ?
+             lemke(increment, outcome.iterations, why) :
+             semismooth_newton(increment, outcome.iterations, why));
+        outcome.failure =
+          head + ": " +
+          (m == StateMethod::lemke ? "Lemke's method " :
+                                     "the semismooth Newton method ") +
+          why + (why.back() == '.' ? "" : ".");
       }
     else
       {
@@ -816,19 +823,58 @@ namespace mbfem
         failure = "did not converge: " + newton.failure();
         return false;
       }
-    const FastOutcome polish =
-      fast_iteration(newton.answer_states(), increment);
+    return settle(newton.answer_states(), increment, iterations, failure);
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::lemke(const unsigned int increment,
+                            unsigned int      &iterations,
+                            std::string       &failure)
+  {
+    // The problem without W first: the method's size says whether W, the
+    // costly part, is needed at all.
+    ContactProblem<dim> problem =
+      condensed_problem(increment, 0., false, false);
+    LemkeMethod<dim> method(problem,
+                            method_parameters.lemke_max_variables,
+                            method_parameters.lemke_pivots_per_variable);
+    if (method.size() <= method_parameters.lemke_max_variables)
+      condensed->add_entries(problem.W);
+    if (!method.solve(iterations))
+      {
+        failure = method.failure();
+        return false;
+      }
+    return settle(method.answer_states(committed),
+                  increment,
+                  iterations,
+                  failure);
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::settle(const Trial       &states,
+                             const unsigned int increment,
+                             unsigned int      &iterations,
+                             std::string       &failure)
+  {
+    const FastOutcome polish = fast_iteration(states, increment);
     iterations += polish.iterations;
     if (!polish.converged)
       {
-        failure = "converged, but its states did not settle in the fast "
-                  "iteration that checks them";
+        failure = "found an answer, but its states did not settle in the "
+                  "fast iteration that checks them";
         return false;
       }
     const std::string moving = refused_mechanism();
     if (!moving.empty())
       {
-        failure = "converged, but its answer was refused: its states leave "
+        failure = "found an answer, but it was refused: its states leave "
                   "a mechanism:" +
                   moving;
         return false;
@@ -1519,6 +1565,18 @@ namespace mbfem
              << " (rotations in units of the block's diameter)";
       }
     return text.str();
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::has_strength_to_lose() const
+  {
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      if (contact_pairs[k].joint.has_strength() && !committed.broken[k])
+        return true;
+    return false;
   }
 
 

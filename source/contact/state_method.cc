@@ -14,6 +14,7 @@ namespace mbfem
       StateMethod::fast,
       StateMethod::load_path,
       StateMethod::semismooth_newton,
+      StateMethod::lemke,
       StateMethod::load_continuation};
   } // namespace
 
@@ -30,6 +31,8 @@ namespace mbfem
           return "load path";
         case StateMethod::semismooth_newton:
           return "semismooth Newton";
+        case StateMethod::lemke:
+          return "Lemke";
         default:
           return "load continuation";
       }
@@ -94,8 +97,8 @@ namespace mbfem
     using namespace dealii;
     prm.declare_entry(
       "State method",
-      "fast, load path, semismooth Newton, load continuation",
-      Patterns::List(Patterns::Selection(state_method_names()), 1, 4),
+      "fast, load path, semismooth Newton, Lemke, load continuation",
+      Patterns::List(Patterns::Selection(state_method_names()), 1, 5),
       "The methods of each increment's state iteration, tried in this "
       "order until one concludes (doc/state_iteration.md). fast: assume "
       "states, solve, check, switch every pair that fails its check. "
@@ -103,8 +106,12 @@ namespace mbfem
       "one pair switching where its condition fails (condensed only). "
       "semismooth Newton: the increment as one nonsmooth system with a "
       "sparse Jacobian, its states then checked by a fast solve "
-      "(condensed only). load continuation: the fast iteration at each "
-      "of 'Load continuation/Load factors' times the increment's load (by "
+      "(condensed only). Lemke: complementary pivoting on the increment's "
+      "problem as a linear complementarity problem (exact in 2D, a "
+      "faceted friction cone in 3D), its states then checked by a fast "
+      "solve (condensed only; see 'Lemke'). load continuation: "
+      "the fast iteration at each of 'Load continuation/Load factors' "
+      "times the increment's load (by "
       "default ten times, then back to it in steps; condensed only). The "
       "monolithic formulation runs the fast iteration only. "
       "Where none concludes, the verdict is that of the fast iteration "
@@ -127,6 +134,25 @@ namespace mbfem
         "largest force or displacement of the increment's data. At most "
         "1e-9, the state check's tolerance, so that the states read from "
         "Newton's answer are those the check accepts.");
+    }
+    prm.leave_subsection();
+    prm.enter_subsection("Lemke");
+    {
+      prm.declare_entry(
+        "Maximum variables",
+        "2000",
+        Patterns::Integer(1),
+        "Lemke's method is not tried on an increment whose problem has more "
+        "variables than this (in 2D 4 or 5 per pair and 2 per floating "
+        "mode; in 3D 10 or 11 per pair): its tableau is dense, 16 n^2 bytes "
+        "(64 MB at 2000), and a pivot costs 2 n^2 operations.");
+      prm.declare_entry(
+        "Pivots per variable",
+        "10",
+        Patterns::Integer(1),
+        "Lemke's method gives up after this many pivots per variable of the "
+        "problem (it needed 0.5 to 0.8 on the problems of "
+        "doc/state_iteration.md).");
     }
     prm.leave_subsection();
     prm.enter_subsection("Load continuation");
@@ -152,6 +178,12 @@ namespace mbfem
     {
       newton_max_iterations = prm.get_integer("Maximum iterations");
       newton_tolerance      = prm.get_double("Tolerance");
+    }
+    prm.leave_subsection();
+    prm.enter_subsection("Lemke");
+    {
+      lemke_max_variables       = prm.get_integer("Maximum variables");
+      lemke_pivots_per_variable = prm.get_integer("Pivots per variable");
     }
     prm.leave_subsection();
     prm.enter_subsection("Load continuation");

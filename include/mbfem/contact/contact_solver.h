@@ -250,15 +250,25 @@ namespace mbfem
     blocks_without_stuck_pairs() const;
 
     /**
+     * Whether a pair has cohesion or tensile strength left at the start of
+     * the increment (unbroken), which the increment could break: where none
+     * has, breaking cannot be why no state was found (doc/decisions.md).
+     */
+    bool
+    has_strength_to_lose() const;
+
+    /**
      * The condensed problem of the increment just solved (before commit())
      * with its solution, or with @p solved false the problem of an
-     * increment that failed, from its start. Condensed formulation only
-     * (source/contact/contact_problem.cc).
+     * increment that failed, from its start. Without W if not
+     * @p with_flexibility (the costly part, CondensedSystem::add_entries()).
+     * Condensed formulation only (source/contact/contact_problem.cc).
      */
     ContactProblem<dim>
     condensed_problem(const unsigned int increment,
                       const double       time,
-                      const bool         solved = true) const;
+                      const bool         solved           = true,
+                      const bool         with_flexibility = true) const;
 
     /** Which method concluded the last solve_increment(). */
     StateMethod
@@ -540,6 +550,28 @@ namespace mbfem
     semismooth_newton(const unsigned int increment,
                       unsigned int      &iterations,
                       std::string       &failure);
+
+    /**
+     * Lemke's method (LemkeMethod) on the increment's condensed problem
+     * from the committed states; its states then polished by the fast
+     * iteration, as semismooth_newton()'s. Adds the pivots and the fast
+     * iteration's to @p iterations; says why not in @p failure.
+     */
+    bool
+    lemke(const unsigned int increment,
+          unsigned int      &iterations,
+          std::string       &failure);
+
+    /**
+     * The fast iteration from the @p states a method found, and the
+     * mechanism test of its answer: true if they stand, the answer then
+     * current. Adds its iterations; says why not in @p failure.
+     */
+    bool
+    settle(const Trial       &states,
+           const unsigned int increment,
+           unsigned int      &iterations,
+           std::string       &failure);
 
     /**
      * The load continuation: the fast iteration at each of 'Contact/Load

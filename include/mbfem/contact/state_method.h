@@ -22,6 +22,9 @@ namespace mbfem
    *   Curnier's projections for the joint law) with a sparse Jacobian,
    *   whose answer gives the states that the fast iteration then solves
    *   and checks;
+   * - Lemke: complementary pivoting on the increment's problem as a
+   *   linear complementarity problem (LemkeMethod), whose answer gives the
+   *   states that the fast iteration then solves and checks;
    * - load continuation: the fast iteration at ten times the increment's
    *   load, then back to it in steps, each from the states of the last.
    */
@@ -30,6 +33,7 @@ namespace mbfem
     fast,
     load_path,
     semismooth_newton,
+    lemke,
     load_continuation
   };
 
@@ -75,6 +79,7 @@ namespace mbfem
     std::vector<StateMethod> methods = {StateMethod::fast,
                                         StateMethod::load_path,
                                         StateMethod::semismooth_newton,
+                                        StateMethod::lemke,
                                         StateMethod::load_continuation};
 
     /** Newton iterations per system before the method gives up. */
@@ -92,6 +97,18 @@ namespace mbfem
      * it.
      */
     std::vector<double> continuation_factors = {10., 5., 2., 1.};
+
+    /**
+     * Lemke's method is not tried on a problem of more variables than
+     * this: its tableau is dense, 16 n^2 bytes, and a pivot costs 2 n^2
+     * operations (2000 variables: 64 MB and 8e6 per pivot).
+     */
+    unsigned int lemke_max_variables = 2000;
+    /**
+     * Pivots per variable before Lemke's method gives up: it needed 0.5 to
+     * 0.8 on the problems of doc/state_iteration.md.
+     */
+    unsigned int lemke_pivots_per_variable = 10;
   };
 } // namespace mbfem
 

@@ -1,0 +1,54 @@
+// Two blocks on a 14.92 deg incline sharing a corner: model 40 of
+// scripts/random_incline_pairs.py (seed 27), the corner variant. gmsh -2
+// incline_pair_corner.geo -format msh22 -o incline_pair_corner.msh
+Point(1) = {0, 0, 0};
+Point(2) = {2.71899239117, 0, 0};
+Point(3) = {2.71899239117, 0.831280831585, 0};
+Point(4) = {0, 0.831280831585, 0};
+Line(1) = {1, 2}; Transfinite Curve{1} = 6;
+Line(2) = {2, 3}; Transfinite Curve{2} = 3;
+Line(3) = {3, 4}; Transfinite Curve{3} = 6;
+Line(4) = {4, 1}; Transfinite Curve{4} = 3;
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Point(5) = {2.71899239117, 2.41239526668, 0};
+Point(6) = {0, 2.41239526668, 0};
+Line(5) = {3, 5}; Transfinite Curve{5} = 4;
+Line(6) = {5, 6}; Transfinite Curve{6} = 6;
+Line(7) = {6, 4}; Transfinite Curve{7} = 4;
+Curve Loop(2) = {-3, 5, 6, 7}; Plane Surface(2) = {2};
+Point(7) = {4.36368962044, 0, 0};
+Point(8) = {4.36368962044, 0.831280831585, 0};
+Line(8) = {2, 7}; Transfinite Curve{8} = 4;
+Line(9) = {7, 8}; Transfinite Curve{9} = 3;
+Line(10) = {8, 3}; Transfinite Curve{10} = 4;
+Curve Loop(3) = {8, 9, 10, -2}; Plane Surface(3) = {3};
+Point(9) = {-1, -1, 0};
+Point(10) = {0, -1, 0};
+Point(11) = {-1, 0, 0};
+Line(11) = {9, 10}; Transfinite Curve{11} = 3;
+Line(12) = {10, 1}; Transfinite Curve{12} = 3;
+Line(13) = {1, 11}; Transfinite Curve{13} = 3;
+Line(14) = {11, 9}; Transfinite Curve{14} = 3;
+Curve Loop(4) = {11, 12, 13, 14}; Plane Surface(4) = {4};
+Point(12) = {2.71899239117, -1, 0};
+Line(15) = {10, 12}; Transfinite Curve{15} = 6;
+Line(16) = {12, 2}; Transfinite Curve{16} = 3;
+Curve Loop(5) = {15, 16, -1, -12}; Plane Surface(5) = {5};
+Point(13) = {4.36368962044, -1, 0};
+Line(17) = {12, 13}; Transfinite Curve{17} = 4;
+Line(18) = {13, 7}; Transfinite Curve{18} = 3;
+Curve Loop(6) = {17, 18, -8, -16}; Plane Surface(6) = {6};
+Point(14) = {5.36368962044, -1, 0};
+Point(15) = {5.36368962044, 0, 0};
+Line(19) = {13, 14}; Transfinite Curve{19} = 3;
+Line(20) = {14, 15}; Transfinite Curve{20} = 3;
+Line(21) = {15, 7}; Transfinite Curve{21} = 3;
+Curve Loop(7) = {19, 20, 21, -18}; Plane Surface(7) = {7};
+Transfinite Surface{4, 5, 6, 7, 3, 1, 2};
+Recombine Surface{4, 5, 6, 7, 3, 1, 2};
+Rotate {{0, 0, 1}, {0, 0, 0}, 14.9209055099 * Pi / 180} { Surface{4, 5, 6, 7, 3, 1, 2}; }
+Physical Surface(1) = {4, 5, 6, 7};
+Physical Surface(2) = {3};
+Physical Surface(3) = {1, 2};
+Physical Curve(1) = {11, 15, 17, 19};
+Physical Curve(2) = {9};
