@@ -7,6 +7,11 @@
 // Material ids: 1 base, 2 block. Boundary ids: 1 the base's bottom, 2 the
 // block's up-slope face (x' = L), for a lateral pressure.
 //
+// With -setnumber dim3 1 the block is 3D: the profile lies in the x-z
+// plane (gravity -z) and is extruded along -y by the width Bw (nb layers);
+// material and boundary ids as in 2D (issue 27's 3D campaign,
+// scripts/random_inclines.py --dimension 3).
+//
 // Regenerate (gmsh 4.8.4, Debian 12), e.g. the two blocks of issue 20:
 //   gmsh -2 -format msh22 incline_block.geo -o incline_24deg.msh
 //   gmsh -2 -format msh22 -setnumber L 3.04 -setnumber H 1.18 \
@@ -59,9 +64,36 @@ Transfinite Curve{11, 13} = nh + 1;
 Transfinite Surface{1, 2, 3, 4};
 Recombine Surface{1, 2, 3, 4};
 
-Rotate {{0, 0, 1}, {0, 0, 0}, theta * Pi / 180} { Surface{1, 2, 3, 4}; }
-
-Physical Surface(1) = {1, 2, 3};
-Physical Surface(2) = {4};
-Physical Curve(1) = {1, 2, 3};
-Physical Curve(2) = {13};
+If (!Exists(dim3))
+  dim3 = 0;
+EndIf
+If (dim3 == 0)
+  Rotate {{0, 0, 1}, {0, 0, 0}, theta * Pi / 180} { Surface{1, 2, 3, 4}; }
+  Physical Surface(1) = {1, 2, 3};
+  Physical Surface(2) = {4};
+  Physical Curve(1) = {1, 2, 3};
+  Physical Curve(2) = {13};
+Else
+  // 3D: the profile in the x-z plane (gravity is -z), rotated about the y
+  // axis so that the slope again rises towards +x, extruded along y by the
+  // width Bw in nb layers into hexahedra.
+  Rotate {{1, 0, 0}, {0, 0, 0}, Pi / 2} { Surface{1, 2, 3, 4}; }
+  Rotate {{0, 1, 0}, {0, 0, 0}, -theta * Pi / 180} { Surface{1, 2, 3, 4}; }
+  If (!Exists(Bw))
+    Bw = 1.0;
+  EndIf
+  If (!Exists(nb))
+    nb = Ceil(n * Bw / L) > 1 ? Ceil(n * Bw / L) : 1;
+  EndIf
+  // Extrude returns the top, the volume, then the sides in the order of
+  // the surface's curve loop: each base part's bottom from its first
+  // curve, the block's up-slope face from curve 13, its loop's second.
+  b1[] = Extrude {0, -Bw, 0} { Surface{1}; Layers{nb}; Recombine; };
+  b2[] = Extrude {0, -Bw, 0} { Surface{2}; Layers{nb}; Recombine; };
+  b3[] = Extrude {0, -Bw, 0} { Surface{3}; Layers{nb}; Recombine; };
+  bk[] = Extrude {0, -Bw, 0} { Surface{4}; Layers{nb}; Recombine; };
+  Physical Volume(1) = {b1[1], b2[1], b3[1]};
+  Physical Volume(2) = {bk[1]};
+  Physical Surface(1) = {b1[2], b2[2], b3[2]};
+  Physical Surface(2) = {bk[3]};
+EndIf
