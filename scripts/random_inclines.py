@@ -204,65 +204,29 @@ def loads_3d(b):
 """ % ("1" if b["ramp"] else "0", expression)
 
 
-def write_case(folder, name, mesh, b, factor):
-    prm = os.path.join(folder, name + ".prm")
-    if b.get("dim", 2) == 3:
-        return write_case_3d(prm, name, mesh, b, factor)
+def loads_2d(b):
+    """The 2D case's boundary conditions: the base's bottom held, and the
+    lateral pressure on the up-slope face (boundary 2), pushing down-dip,
+    ramped with the load history."""
     th = math.radians(b["theta"])
-    # Lateral pressure on the up-slope face (boundary 2), pushing down-dip,
-    # ramped with the load history.
     traction = "%.9g*t; %.9g*t" % (-b["p_lat"] * math.cos(th),
                                    -b["p_lat"] * math.sin(th))
-    with open(prm, "w") as f:
-        f.write("""# Random incline block (scripts/random_inclines.py): %s
-# Run at the strength factor F = %.9g.
-set Dimension = 2
-subsection Mesh
-  set Source    = gmsh
-  set Mesh file = %s
-end
-subsection Finite element
-  set Polynomial degree = %d
-end
-subsection Material
-  set Young's modulus = 2e7
-  set Poisson's ratio = 0.2
-  set Unit weight     = %g
-end
-subsection Boundary conditions
-  set Prescribed displacement boundary ids = 1: xy
+    return """  set Prescribed displacement boundary ids = 1: xy
   set Traction boundary ids = 2
   set Gravity ramp time = %s
   subsection Traction
     set Function expression = %s
   end
-end
-subsection Load history
-  set Number of increments = %d
-end
-subsection Contact
-  set Interfaces           = blocks 1:2
-  set Friction coefficient = %.9g
-  set Cohesion             = %.9g
-end
-subsection Output
-  set Base name = block
-  set Directory = %s
-  set Write VTU = false
-end
-""" % ({k: (round(v, 4) if isinstance(v, float) else v)
-        for k, v in b.items()}, factor, mesh, b["p"], UNIT_WEIGHT,
-            "1" if b["ramp"] else "0", traction, b["n_inc"],
-            math.tan(math.radians(b["phi"])) / factor, b["c"] / factor,
-            name))
-    return prm
+""" % ("1" if b["ramp"] else "0", traction)
 
 
-def write_case_3d(prm, name, mesh, b, factor):
+def write_case(folder, name, mesh, b, factor):
+    dim = b.get("dim", 2)
+    prm = os.path.join(folder, name + ".prm")
     with open(prm, "w") as f:
-        f.write("""# Random 3D incline block (scripts/random_inclines.py): %s
+        f.write("""# Random %sincline block (scripts/random_inclines.py): %s
 # Run at the strength factor F = %.9g.
-set Dimension = 3
+set Dimension = %d
 subsection Mesh
   set Source    = gmsh
   set Mesh file = %s
@@ -290,9 +254,10 @@ subsection Output
   set Directory = %s
   set Write VTU = false
 end
-""" % ({k: (round(v, 4) if isinstance(v, float) else v)
-        for k, v in b.items()}, factor, mesh, b["p"], UNIT_WEIGHT,
-            loads_3d(b), b["n_inc"],
+""" % ("" if dim == 2 else "3D ",
+            {k: (round(v, 4) if isinstance(v, float) else v)
+             for k, v in b.items()}, factor, dim, mesh, b["p"], UNIT_WEIGHT,
+            loads_2d(b) if dim == 2 else loads_3d(b), b["n_inc"],
             math.tan(math.radians(b["phi"])) / factor, b["c"] / factor,
             name))
     return prm
