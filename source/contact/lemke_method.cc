@@ -202,8 +202,10 @@ namespace mbfem
     , broken(contact_problem.n_pairs, false)
   {
     Assert(problem.q.size() == problem.n_pairs * dim, ExcInternalError());
-    Assert(problem.G.m() == problem.n_pairs * dim &&
-             problem.G.n() == problem.n_alpha,
+    // (Without floating modes G is empty: a FullMatrix with no columns
+    // has no rows either.)
+    Assert(problem.n_alpha == 0 || (problem.G.m() == problem.n_pairs * dim &&
+                                    problem.G.n() == problem.n_alpha),
            ExcInternalError());
     Assert(problem.f.size() == problem.n_alpha, ExcInternalError());
     number_variables();
