@@ -143,6 +143,9 @@ import time
 import numpy as np
 from scipy.optimize import linprog
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from random_inclines import loads_2d  # noqa: E402
+
 SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUTCOME = {0: "converged", 2: "certified-none", 3: "not-converged",
            4: "none-along-mechanism"}
@@ -545,9 +548,6 @@ def write_mesh(folder, i, m, variant):
 
 
 def write_case(folder, name, mesh, m, variant, factor):
-    th = math.radians(m["theta"])
-    traction = "%.9g*t; %.9g*t" % (-m["p_lat"] * math.cos(th),
-                                   -m["p_lat"] * math.sin(th))
     mu = math.tan(math.radians(m["phi"])) / factor
     mu23 = math.tan(math.radians(m["phi23"])) / factor
     c = m["c"] / factor
@@ -575,13 +575,7 @@ subsection Material
   set Unit weight     = %g
 end
 subsection Boundary conditions
-  set Prescribed displacement boundary ids = 1: xy
-  set Traction boundary ids = 2
-  set Gravity ramp time = %s
-  subsection Traction
-    set Function expression = %s
-  end
-end
+%send
 subsection Load history
   set Number of increments = %d
 end
@@ -597,7 +591,7 @@ subsection Output
   set Write VTU = false
 end
 """ % (variant, shown, factor, mesh, m["p"], UNIT_WEIGHT,
-            "1" if m["ramp"] else "0", traction, m["n_inc"], interfaces,
+            loads_2d(m), m["n_inc"], interfaces,
             search, mu, mu, mu23, c, c, name))
     return prm
 

@@ -714,15 +714,14 @@ namespace mbfem
     const std::vector<Tensor<1, dim>> displacement = current_displacement;
     if (m == StateMethod::semismooth_newton || m == StateMethod::lemke)
       {
+        const bool  is_lemke = (m == StateMethod::lemke);
         std::string why;
         outcome.converged =
-          (m == StateMethod::lemke ?
-             lemke(increment, outcome.iterations, why) :
-             semismooth_newton(increment, outcome.iterations, why));
+          is_lemke ? lemke(increment, outcome.iterations, why) :
+                     semismooth_newton(increment, outcome.iterations, why);
         outcome.failure =
           head + ": " +
-          (m == StateMethod::lemke ? "Lemke's method " :
-                                     "the semismooth Newton method ") +
+          (is_lemke ? "Lemke's method " : "the semismooth Newton method ") +
           why + (why.back() == '.' ? "" : ".");
       }
     else
