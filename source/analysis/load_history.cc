@@ -1,8 +1,10 @@
 #include <mbfem/analysis/load_history.h>
 #include <mbfem/base/text_input.h>
 
+#include <deal.II/base/types.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -47,6 +49,39 @@ namespace mbfem
         "numbered on through all stages, and the summary CSV names each "
         "one's stage. Given, it replaces 'Number of increments' and 'End "
         "time', which must then stay at 1.");
+      prm.declare_entry(
+        "Added blocks",
+        "",
+        Patterns::Anything(),
+        "Blocks that stages add (a lift of a dam, a backfill), separated by "
+        "';', each 'STAGE: MATERIAL IDS', e.g. 'lift 2: 3; lift 3: 4, 5'. "
+        "A block added by a stage is not there before it: it carries no "
+        "load and touches nothing. At the start of its stage it is cast "
+        "stress-free onto the blocks as they have deformed: its pairs start "
+        "closed, stuck and unloaded where those blocks are, and its "
+        "self-weight and loads grow from 0 to full over the stage's "
+        "increments. Condensed formulation and elastic blocks only.");
+      prm.declare_entry(
+        "Removed blocks",
+        "",
+        Patterns::Anything(),
+        "Blocks that stages remove (an excavation bench, a temporary "
+        "support), separated by ';', each 'STAGE: MATERIAL IDS', e.g. "
+        "'bench 1: 6'. At the start of its stage the block and its pairs "
+        "are gone; the forces its pairs exerted on the blocks that stay are "
+        "released over the stage's increments (from full to 0), so that "
+        "friction follows the unloading. Not in the first stage.");
+      prm.declare_entry(
+        "Interfaces switched on",
+        "",
+        Patterns::Anything(),
+        "Interfaces that stages switch on (a contraction joint grouted), "
+        "separated by ';', each 'STAGE: NUMBERS', where a number counts the "
+        "entries of 'Contact/Interfaces' from 1, e.g. 'grouting: 2'. Before "
+        "its stage the interface does not exist: the blocks on its two "
+        "sides do not touch there. At the start of the stage its pairs "
+        "close where the blocks are, stuck and unloaded, whatever gap "
+        "there was (the grout fills it).");
     }
     prm.leave_subsection();
   }
@@ -67,6 +102,15 @@ namespace mbfem
                              "time, so it must be positive (at 0 every "
                              "increment would be at t = 0)."));
       parse_stages(prm.get("Stages"));
+      parse_stage_lists(prm.get("Added blocks"),
+                        "Added blocks",
+                        &Stage::added_blocks);
+      parse_stage_lists(prm.get("Removed blocks"),
+                        "Removed blocks",
+                        &Stage::removed_blocks);
+      parse_stage_lists(prm.get("Interfaces switched on"),
+                        "Interfaces switched on",
+                        &Stage::interfaces_on);
     }
     prm.leave_subsection();
   }
@@ -127,6 +171,115 @@ namespace mbfem
         stages.push_back(stage);
       }
     end_time = previous;
+  }
+
+
+
+  void
+  LoadHistory::parse_stage_lists(const std::string        &text,
+                                 const std::string        &entry,
+                                 std::vector<unsigned int> Stage::*ids)
+  {
+    const std::string where = "Load history/" + entry;
+    if (Utilities::trim(text).empty())
+      return;
+    AssertThrow(has_stages(),
+                ExcMessage(where + " names stages, but 'Load history/Stages' "
+                                   "declares none."));
+    std::vector<unsigned int> seen;
+    for (const auto &item : split_list(text, ';', where))
+      {
+        const auto colon = item.rfind(':');
+        AssertThrow(colon != std::string::npos && colon > 0,
+                    ExcMessage(where + ": cannot read '" + item +
+                               "'; write 'STAGE: N, N'."));
+        const std::string name = Utilities::trim(item.substr(0, colon));
+        const auto        stage =
+          std::find_if(stages.begin(), stages.end(), [&](const Stage &s) {
+            return s.name == name;
+          });
+        std::string names;
+        for (const auto &s : stages)
+          names += (names.empty() ? "'" : ", '") + s.name + "'";
+        AssertThrow(stage != stages.end(),
+                    ExcMessage(where + ": no stage is named '" + name +
+                               "' (the stages are " + names + ")."));
+        const auto ids_of_stage =
+          parse_id_list(item.substr(colon + 1), where + ", '" + name + "'");
+        AssertThrow(!ids_of_stage.empty(),
+                    ExcMessage(where + ", '" + name +
+                               "': give the numbers after the ':'."));
+        AssertThrow(stage != stages.begin(),
+                    ExcMessage(where + ", '" + name +
+                               "': the first stage starts the model; what "
+                               "is there from the start needs no entry."));
+        for (const unsigned int id : ids_of_stage)
+          {
+            AssertThrow(std::find(seen.begin(), seen.end(), id) == seen.end(),
+                        ExcMessage(where + ": " + std::to_string(id) +
+                                   " is named twice; a block is added or "
+                                   "removed, and an interface switched on, "
+                                   "once."));
+            seen.push_back(id);
+            ((*stage).*ids).push_back(id);
+          }
+      }
+  }
+
+
+
+  unsigned int
+  LoadHistory::stage_adding_block(const unsigned int id) const
+  {
+    for (unsigned int s = 0; s < stages.size(); ++s)
+      for (const unsigned int added : stages[s].added_blocks)
+        if (added == id)
+          return s;
+    return numbers::invalid_unsigned_int;
+  }
+
+
+
+  unsigned int
+  LoadHistory::stage_removing_block(const unsigned int id) const
+  {
+    for (unsigned int s = 0; s < stages.size(); ++s)
+      for (const unsigned int removed : stages[s].removed_blocks)
+        if (removed == id)
+          return s;
+    return numbers::invalid_unsigned_int;
+  }
+
+
+
+  unsigned int
+  LoadHistory::stage_switching_on(const unsigned int number) const
+  {
+    for (unsigned int s = 0; s < stages.size(); ++s)
+      for (const unsigned int on : stages[s].interfaces_on)
+        if (on == number)
+          return s;
+    return numbers::invalid_unsigned_int;
+  }
+
+
+
+  bool
+  LoadHistory::changes_model() const
+  {
+    return std::any_of(stages.begin(), stages.end(), [](const Stage &s) {
+      return !s.added_blocks.empty() || !s.removed_blocks.empty() ||
+             !s.interfaces_on.empty();
+    });
+  }
+
+
+
+  std::pair<double, double>
+  LoadHistory::stage_times(const unsigned int s) const
+  {
+    AssertIndexRange(s, stages.size());
+    return {s == 0 ? 0. : stages[s - 1].end_time, stages[s].end_time};
   }
 
 

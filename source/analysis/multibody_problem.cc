@@ -128,6 +128,7 @@ namespace mbfem
     // A signal during the set-up ends the run between its steps.
     Timer setup_clock;
     make_blocks();
+    check_staged_model();
     stop_if_signalled(-1);
     setup_blocks();
     print_blocks();
@@ -245,22 +246,24 @@ namespace mbfem
                   "initial-stress method."));
     if (pairs.empty())
       return;
-    const auto make_solver = [&](const ContactFormulation formulation) {
+    const auto make_solver = [&](const ContactFormulation      formulation,
+                                 std::vector<ContactPair<dim>> solver_pairs) {
       auto solver =
-        std::make_unique<ContactSolver<dim>>(pairs,
+        std::make_unique<ContactSolver<dim>>(std::move(solver_pairs),
                                              contact_parameters.max_iterations,
                                              formulation,
                                              parameters.linear_solver.package,
                                              contact_parameters.state_system);
       solver->set_state_methods(contact_parameters.state_method);
-      solver->setup(blocks);
       return solver;
     };
     if (contact_parameters.runs_condensed())
       {
         TimerOutput::Scope t(timer, "flexibility");
         Timer              clock;
-        contact = make_solver(ContactFormulation::condensed);
+        make_configurations(pairs, [&](std::vector<ContactPair<dim>> subset) {
+          return make_solver(ContactFormulation::condensed, std::move(subset));
+        });
         condensed_seconds += clock.wall_time();
       }
     // A line every 10 s of a long state iteration (not in test mode: its
@@ -272,19 +275,40 @@ namespace mbfem
       {
         TimerOutput::Scope t(timer, "monolithic assembly");
         Timer              clock;
-        (contact ? reference : contact) =
-          make_solver(ContactFormulation::monolithic);
+        auto solver = make_solver(ContactFormulation::monolithic, pairs);
+        solver->setup(blocks);
+        if (contact)
+          reference = std::move(solver);
+        else
+          {
+            configurations.resize(1);
+            configurations[0].present.assign(blocks.size(), true);
+            for (unsigned int k = 0; k < pairs.size(); ++k)
+              configurations[0].pairs.push_back(k);
+            configurations[0].solver = std::move(solver);
+            contact                  = configurations[0].solver.get();
+          }
         monolithic_seconds += clock.wall_time();
       }
     if (parameters.water_pressure.enabled())
       {
-        water = std::make_unique<JointWater<dim>>(parameters.water_pressure,
-                                                  parameters.contact,
-                                                  contact->pairs(),
-                                                  blocks.size());
-        pcout << "  water pressure on " << water->n_wet_pairs() << " of "
-              << contact->pairs().size()
-              << " pairs (both faces of the joint)\n";
+        for (auto &configuration : configurations)
+          configuration.water =
+            std::make_unique<JointWater<dim>>(parameters.water_pressure,
+                                              parameters.contact,
+                                              configuration.solver->pairs(),
+                                              blocks.size());
+        water = configurations[0].water.get();
+        // The stage with the most pairs (the model finished, unless some
+        // stage removes blocks).
+        const Configuration &most =
+          *std::max_element(configurations.begin(),
+                            configurations.end(),
+                            [](const Configuration &a, const Configuration &b) {
+                              return a.pairs.size() < b.pairs.size();
+                            });
+        pcout << "  water pressure on " << most.water->n_wet_pairs() << " of "
+              << most.pairs.size() << " pairs (both faces of the joint)\n";
       }
     pcout << "  contact formulation: "
           << (!contact_parameters.runs_monolithic() ? "condensed" :
@@ -330,6 +354,7 @@ namespace mbfem
     // Before the solve: its step halvings and progress lines belong to it.
     if (!trial_run)
       print_stage(k);
+    switch_configuration(k);
     if (contact)
       contact->start_progress(k);
     increment_contact_seconds = 0.;
@@ -366,8 +391,15 @@ namespace mbfem
             std::vector<double> water_pressure;
             for (unsigned int i = 0; water && i < contact->pairs().size(); ++i)
               water_pressure.push_back(water->pressure(i, time));
-            pair_file = write_pair_files(
-              *contact, parameters.output, k, time, water_pressure);
+            pair_file =
+              write_pair_files(*contact,
+                               parameters.output,
+                               k,
+                               time,
+                               water_pressure,
+                               parameters.load_history.changes_model() ?
+                                 configurations[active_configuration].pairs :
+                                 std::vector<unsigned int>());
             if (parameters.output.write_contact_problems &&
                 contact->formulation() == ContactFormulation::condensed)
               contact->condensed_problem(k, time).write(problem_stem(k, ""));
@@ -387,7 +419,8 @@ namespace mbfem
         TimerOutput::Scope       t(timer, "output");
         std::vector<std::string> files;
         for (const auto &block : blocks)
-          files.push_back(writer->write_block(*block, block->get_id(), k));
+          if (block->presence(time) > 0.) // not before a stage adds it
+            files.push_back(writer->write_block(*block, block->get_id(), k));
         writer->add_step(time, files);
         if (pair_writer)
           pair_writer->add_step(time, {pair_file});
@@ -683,7 +716,7 @@ namespace mbfem
         try
           {
             end_with_certificate<dim>(
-              contact.get(),
+              contact,
               first_failure +
                 (history.max_halvings == 0 ?
                    "" :
@@ -817,6 +850,7 @@ namespace mbfem
           block.assemble_load(parameters.boundary_conditions, time);
           if (water)
             water->add_load(b, block, time);
+          add_released_forces(b, time); // from the pairs of removed blocks
           if (condensed)
             {
               Timer clock;
@@ -1434,7 +1468,7 @@ namespace mbfem
   const ContactSolver<dim> *
   MultiBodyProblem<dim>::get_contact() const
   {
-    return contact.get();
+    return contact;
   }
 
 

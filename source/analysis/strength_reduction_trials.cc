@@ -39,7 +39,9 @@ namespace mbfem
           << ", the last factor that converged:\n";
     condensed_seconds = condensed_setup;
     Timer final_clock;
-    contact->restart(factor, srm.reduce_tensile_strength);
+    restart_contact(factor);
+    for (auto &configuration : configurations)
+      configuration.solver->set_early_verdict(false); // the full messages
     run_load_history();
     const double final_seconds = final_clock.wall_time();
 
@@ -134,8 +136,11 @@ namespace mbfem
     const unsigned int last  = parameters.load_history.n_increments;
     trial.factor             = factor;
     trial.n_increments       = last + 1 - first;
-    contact->restart(factor,
-                     parameters.strength_reduction.reduce_tensile_strength);
+    restart_contact(factor);
+    // A trial needs only the verdict: where statics proves none, the
+    // costly methods of the chain are not tried.
+    for (auto &configuration : configurations)
+      configuration.solver->set_early_verdict(true);
     const TrialScope scope(pcout, trial_run);
 
     std::set<std::string> methods;

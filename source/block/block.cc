@@ -398,6 +398,39 @@ namespace mbfem
 
   template <int dim>
   void
+  Block<dim>::set_added(const double start, const double end)
+  {
+    Assert(end > start, ExcInternalError());
+    added_from  = start;
+    added_until = end;
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::set_removed(const double start)
+  {
+    removed_after = start;
+  }
+
+
+
+  template <int dim>
+  double
+  Block<dim>::presence(const double time) const
+  {
+    if (time > removed_after)
+      return 0.;
+    if (added_until <= added_from)
+      return 1.;
+    return std::clamp((time - added_from) / (added_until - added_from), 0., 1.);
+  }
+
+
+
+  template <int dim>
+  void
   Block<dim>::assemble_load(BoundaryConditions<dim> &boundary_conditions,
                             const double             time)
   {
@@ -423,6 +456,8 @@ namespace mbfem
                                state_quadrature(),
                                update_gradients | update_JxW_values);
     Vector<double>     cell_load(n);
+    // A block a stage adds: its weight and loads come on over the stage.
+    const double fraction = presence(time);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -434,6 +469,7 @@ namespace mbfem
         if (in_situ)
           add_in_situ_boundary_load(cell, time, fe_face_values, cell_load);
         add_traction_load(cell, boundary_conditions, fe_face_values, cell_load);
+        cell_load *= fraction;
         distribute_cell_load(cell, cell_load, state_values);
       }
 

@@ -146,13 +146,15 @@ namespace mbfem
 
   template <int dim>
   void
-  ContactSolver<dim>::restart(const double strength_factor,
-                              const bool   reduce_tension)
+  ContactSolver<dim>::restart(const double factor,
+                              const bool   reduce_tensile_strength)
   {
-    AssertThrow(strength_factor > 0., ExcInternalError());
+    AssertThrow(factor > 0., ExcInternalError());
+    strength_factor = factor;
+    reduce_tension  = reduce_tensile_strength;
     for (unsigned int k = 0; k < n_pairs; ++k)
       contact_pairs[k].joint =
-        nominal_joints[k].reduced(strength_factor, reduce_tension);
+        nominal_joints[k].reduced(factor, reduce_tensile_strength);
     committed = initial;
     committed_displacement.assign(n_pairs, Tensor<1, dim>());
     committed_solution.reinit(0);
@@ -181,6 +183,20 @@ namespace mbfem
     const std::vector<std::unique_ptr<Block<dim>>> &blocks)
   {
     coupling.setup(blocks, contact_pairs);
+    system->setup(blocks);
+    held = system->held();
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::setup(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+    const std::vector<bool>                        &present)
+  {
+    AssertThrow(condensed, ExcInternalError());
+    coupling.setup(blocks, contact_pairs, present);
     system->setup(blocks);
     held = system->held();
   }
@@ -653,6 +669,18 @@ namespace mbfem
           m == StateMethod::fast || m == StateMethod::load_path;
         if (!primary)
           secondary.push_back(outcome.failure);
+        // A trial of strength reduction: before the costly methods, the
+        // certificate with the joints as the increment found them.
+        // (Its first LP alone: the verdict, no strength factor.)
+        if (early_verdict && m == StateMethod::load_path &&
+            m != methods.back() && coupling.n_modes() > 0)
+          AssertThrow(statics(committed.broken).infeasibility(1., true) <=
+                        StaticAdmissibility<dim>::feasibility_tolerance,
+                      Exceptions::ExcNoEquilibrium(
+                        outcome.failure +
+                        "\n    The statics certificate, with the joints as "
+                        "they were at the start of the increment, admits no "
+                        "forces: no equilibrium."));
         if (outcome.no_equilibrium ||
             (!verdict.no_equilibrium && (primary || !verdict_is_primary)))
           {
@@ -1371,8 +1399,20 @@ namespace mbfem
   ContactSolver<dim>::slip(const unsigned int k) const
   {
     Tensor<1, dim> s = current_displacement[k];
-    s[0]             = 0.;
+    if (!start_displacement.empty())
+      s -= start_displacement[k];
+    s[0] = 0.;
     return s;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactSolver<dim>::starting_gap(const unsigned int k) const
+  {
+    return contact_pairs[k].initial_gap +
+           (start_displacement.empty() ? 0. : start_displacement[k][0]);
   }
 
 
@@ -1410,23 +1450,9 @@ namespace mbfem
                               const bool unbroken) const
   {
     using Certificate = StaticAdmissibility<dim>;
-    std::vector<typename Certificate::Candidate> candidates(n_pairs);
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      {
-        candidates[k].joint  = contact_pairs[k].joint;
-        candidates[k].area   = contact_pairs[k].area;
-        candidates[k].broken = !unbroken && current.broken[k];
-        candidates[k].tied   = contact_pairs[k].tied;
-        if (k < held.size())
-          candidates[k].held = held[k];
-      }
-    std::vector<double> resultant = loads.resultant;
-    resultant.resize(coupling.n_modes(), 0.);
-    const Certificate            certificate(std::move(candidates),
-                                  coupling.matrix(),
-                                  resultant);
     typename Certificate::Result result =
-      certificate.solve(with_mechanism_factor);
+      statics(unbroken ? std::vector<bool>(n_pairs, false) : current.broken)
+        .solve(with_mechanism_factor);
 
     std::ostringstream text;
     text << std::fixed << std::setprecision(6);
@@ -1468,6 +1494,37 @@ namespace mbfem
     text << describe_mechanism_factor(result);
     result.description = text.str();
     return result;
+  }
+
+
+
+  template <int dim>
+  StaticAdmissibility<dim>
+  ContactSolver<dim>::statics(const std::vector<bool> &broken) const
+  {
+    using Certificate = StaticAdmissibility<dim>;
+    std::vector<typename Certificate::Candidate> candidates(n_pairs);
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        candidates[k].joint  = contact_pairs[k].joint;
+        candidates[k].area   = contact_pairs[k].area;
+        candidates[k].broken = broken[k];
+        candidates[k].tied   = contact_pairs[k].tied;
+        if (k < held.size())
+          candidates[k].held = held[k];
+      }
+    std::vector<double> resultant = loads.resultant;
+    resultant.resize(coupling.n_modes(), 0.);
+    return Certificate(std::move(candidates), coupling.matrix(), resultant);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::set_early_verdict(const bool on)
+  {
+    early_verdict = on;
   }
 
 

@@ -6,8 +6,17 @@ namespace mbfem
   void
   RigidCoupling<dim>::setup(
     const std::vector<std::unique_ptr<Block<dim>>> &blocks,
-    const std::vector<ContactPair<dim>>            &pairs)
+    const std::vector<ContactPair<dim>>            &pairs,
+    const std::vector<bool>                        &present)
   {
+    AssertThrow(present.empty() || present.size() == blocks.size(),
+                ExcInternalError());
+    const auto modes_of =
+      [&](const unsigned int b) -> const std::vector<Vector<double>> & {
+      static const std::vector<Vector<double>> none;
+      return (present.empty() || present[b]) ? blocks[b]->floating_modes() :
+                                               none;
+    };
     first_mode.assign(blocks.size(), 0);
     block_modes.assign(blocks.size(), 0);
     total = 0;
@@ -16,10 +25,12 @@ namespace mbfem
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
         first_mode[b]  = total;
-        block_modes[b] = blocks[b]->floating_modes().size();
+        block_modes[b] = modes_of(b).size();
         total += block_modes[b];
         names.push_back(blocks[b]->name());
-        mode_vectors.push_back(blocks[b]->free_rigid_body_modes());
+        mode_vectors.push_back(block_modes[b] == 0 ?
+                                 std::vector<Vector<double>>() :
+                                 blocks[b]->free_rigid_body_modes());
       }
 
     // P in global axes: a side's displacement is sum_i w_i u(node_i), the
@@ -28,7 +39,7 @@ namespace mbfem
     FullMatrix<double> p_global(n_r, total);
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
-        const auto &modes = blocks[b]->floating_modes();
+        const auto &modes = modes_of(b);
         for (unsigned int k = 0; k < pairs.size() && !modes.empty(); ++k)
           for (const int sign : {-1, 1})
             {
@@ -66,6 +77,8 @@ namespace mbfem
     std::vector<double> resultant(total, 0.);
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
+        if (block_modes[b] == 0)
+          continue;
         const auto block_resultant = blocks[b]->external_load_resultant();
         for (unsigned int a = 0; a < block_resultant.size(); ++a)
           resultant[first_mode[b] + a] = block_resultant[a];

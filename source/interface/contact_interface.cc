@@ -820,6 +820,25 @@ namespace mbfem
 
 
 
+  template <int dim>
+  Tensor<1, dim>
+  ContactPair<dim>::relative_displacement(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks) const
+  {
+    Tensor<1, dim> v;
+    for (const int sign : {-1, 1})
+      {
+        const auto           &side = this->side(sign);
+        const Vector<double> &u    = blocks[side.block]->get_solution();
+        for (const auto &node : side.nodes)
+          for (unsigned int c = 0; c < dim; ++c)
+            v[c] += sign * node.weight * u(node.dofs[c]);
+      }
+    return v;
+  }
+
+
+
   template struct ContactPair<2>;
   template struct ContactPair<3>;
   template std::vector<ContactPair<2>>

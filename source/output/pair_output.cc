@@ -26,10 +26,11 @@ namespace mbfem
 
     template <int dim>
     std::string
-    pair_table(const ContactSolver<dim>  &contact,
-               const unsigned int         increment,
-               const double               time,
-               const std::vector<double> &water)
+    pair_table(const ContactSolver<dim>        &contact,
+               const unsigned int               increment,
+               const double                     time,
+               const std::vector<double>       &water,
+               const std::vector<unsigned int> &numbers)
     {
       const char        *axes[] = {"x", "y", "z"};
       std::ostringstream csv;
@@ -53,7 +54,8 @@ namespace mbfem
           const Point<dim>     x    = pair.midpoint();
           const Tensor<1, dim> rho  = contact.local_force(i);
           const Tensor<1, dim> s    = contact.slip(i);
-          csv << i << "," << pair.interface + 1;
+          csv << (numbers.empty() ? i : numbers[i]) << ","
+              << pair.interface + 1;
           for (unsigned int d = 0; d < dim; ++d)
             append(csv, {x[d]});
           for (unsigned int d = 0; d < dim; ++d)
@@ -63,7 +65,7 @@ namespace mbfem
             append(csv, {s[d]});
           csv << "," << to_string(contact.state(i)) << ","
               << (contact.broken(i) ? 1 : 0);
-          append(csv, {pair.area, pair.initial_gap});
+          append(csv, {pair.area, contact.starting_gap(i)});
           if (!water.empty())
             append(csv, {water[i]});
           csv << "\n";
@@ -155,16 +157,18 @@ namespace mbfem
 
   template <int dim>
   std::string
-  write_pair_files(const ContactSolver<dim>  &contact,
-                   const OutputParameters    &output,
-                   const unsigned int         increment,
-                   const double               time,
-                   const std::vector<double> &water_pressure)
+  write_pair_files(const ContactSolver<dim>        &contact,
+                   const OutputParameters          &output,
+                   const unsigned int               increment,
+                   const double                     time,
+                   const std::vector<double>       &water_pressure,
+                   const std::vector<unsigned int> &pair_numbers)
   {
     const std::string stem =
       output.base_name + "-pairs-" + Utilities::int_to_string(increment, 4);
-    write_file_atomically(output.directory + "/" + stem + ".csv",
-                          pair_table(contact, increment, time, water_pressure));
+    write_file_atomically(
+      output.directory + "/" + stem + ".csv",
+      pair_table(contact, increment, time, water_pressure, pair_numbers));
     if (!output.write_vtu)
       return "";
     write_file_atomically(output.directory + "/" + stem + ".vtu",
@@ -179,11 +183,13 @@ namespace mbfem
                    const OutputParameters &,
                    const unsigned int,
                    const double,
-                   const std::vector<double> &);
+                   const std::vector<double> &,
+                   const std::vector<unsigned int> &);
   template std::string
   write_pair_files(const ContactSolver<3> &,
                    const OutputParameters &,
                    const unsigned int,
                    const double,
-                   const std::vector<double> &);
+                   const std::vector<double> &,
+                   const std::vector<unsigned int> &);
 } // namespace mbfem

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mbfem
@@ -38,6 +39,15 @@ namespace mbfem
       std::string  name;
       double       end_time     = 1.;
       unsigned int n_increments = 1;
+      /** Material ids of the blocks this stage adds ('Added blocks'). */
+      std::vector<unsigned int> added_blocks;
+      /** Material ids of the blocks this stage removes ('Removed blocks'). */
+      std::vector<unsigned int> removed_blocks;
+      /**
+       * Interfaces this stage switches on ('Interfaces switched on'):
+       * numbers of 'Contact/Interfaces' entries, from 1.
+       */
+      std::vector<unsigned int> interfaces_on;
     };
 
     /** Whether 'Stages' declared any (else one stage, unnamed). */
@@ -54,6 +64,32 @@ namespace mbfem
     /** Whether increment @p k is the first of its stage. */
     bool
     starts_stage(const unsigned int k) const;
+
+    /**
+     * The stage that adds the block of material id @p id, or
+     * numbers::invalid_unsigned_int for a block there from the start.
+     */
+    unsigned int
+    stage_adding_block(const unsigned int id) const;
+
+    /** The stage that removes the block of material id @p id, as above. */
+    unsigned int
+    stage_removing_block(const unsigned int id) const;
+
+    /** The stage that switches interface @p number (from 1) on, as above. */
+    unsigned int
+    stage_switching_on(const unsigned int number) const;
+
+    /**
+     * Whether some stage adds or removes a block or switches an interface
+     * on.
+     */
+    bool
+    changes_model() const;
+
+    /** Start and end time of stage @p s. */
+    std::pair<double, double>
+    stage_times(const unsigned int s) const;
 
     /** The declared stages, in order; empty without 'Stages'. */
     std::vector<Stage> stages;
@@ -73,6 +109,15 @@ namespace mbfem
     /** 'Stages': sets stages, n_increments and end_time. */
     void
     parse_stages(const std::string &text);
+
+    /**
+     * 'Added blocks' or 'Interfaces switched on' (@p entry): 'STAGE: N,
+     * N; ...' into the named stages' @p ids.
+     */
+    void
+    parse_stage_lists(const std::string        &text,
+                      const std::string        &entry,
+                      std::vector<unsigned int> Stage::*ids);
   };
 } // namespace mbfem
 

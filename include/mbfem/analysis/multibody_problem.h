@@ -11,6 +11,7 @@
 #include <deal.II/base/timer.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -69,6 +70,42 @@ namespace mbfem
      */
     void
     make_contact();
+
+    /**
+     * Models whose stages add or remove blocks or switch interfaces on:
+     * the refusals (the monolithic reference, plasticity, an in-situ
+     * stress, unknown blocks or interfaces, an added block moved by its
+     * supports before its stage, a block removed by the first stage or no
+     * later than it is added), and each added or removed block's stage
+     * (Block::set_added(), Block::set_removed()).
+     */
+    void
+    check_staged_model();
+
+    /**
+     * The configurations of the stages from the pairs of the whole model
+     * (a single one without stages that change the model), each with its
+     * condensed solver set up, and their water.
+     */
+    void
+    make_configurations(const std::vector<ContactPair<dim>> &pairs,
+                        const std::function<std::unique_ptr<ContactSolver<dim>>(
+                          std::vector<ContactPair<dim>>)>   &make_solver);
+
+    /**
+     * Increment @p k begins a stage with another configuration: its
+     * solver takes over (ContactSolver::continue_from()) and a line says
+     * what the stage adds.
+     */
+    void
+    switch_configuration(const unsigned int k);
+
+    /**
+     * Back to the first configuration with its states before the first
+     * increment, the joints' strengths divided by @p factor.
+     */
+    void
+    restart_contact(const double factor);
 
     /** Every increment of the load history, from the start. */
     void
@@ -298,7 +335,81 @@ namespace mbfem
     ConditionalOStream                      &pcout;
     TimerOutput                              timer;
     std::vector<std::unique_ptr<Block<dim>>> blocks;
-    std::unique_ptr<ContactSolver<dim>>      contact;
+    /**
+     * The blocks present and the pairs (indices into the pairs of the
+     * whole model) from stage first_stage on, until the next
+     * configuration's, with their contact solver and water.
+     */
+    struct Configuration
+    {
+      unsigned int                        first_stage = 0;
+      std::vector<bool>                   present;
+      std::vector<unsigned int>           pairs;
+      std::unique_ptr<ContactSolver<dim>> solver;
+      std::unique_ptr<JointWater<dim>>    water;
+    };
+    std::vector<Configuration> configurations;
+    unsigned int               active_configuration = 0;
+    /**
+     * The forces that the pairs of a removed block exerted on a block that
+     * stays (its DoFs and forces), released linearly from full at start
+     * to 0 at end, the removing stage's times.
+     */
+    struct ReleasedForces
+    {
+      unsigned int                         block = 0;
+      std::vector<types::global_dof_index> dofs;
+      std::vector<double>                  forces;
+      double                               start = 0., end = 1.;
+    };
+    std::vector<ReleasedForces> released;
+
+    /**
+     * switch_configuration(): the forces of the pairs of @p earlier that
+     * end at stage @p s because it removes one of their blocks, as
+     * released forces on the blocks that stay.
+     */
+    void
+    release_removed_pairs(const Configuration &earlier,
+                          const Configuration &next,
+                          const unsigned int   s);
+
+    /**
+     * make_configurations(): every floating block of @p configuration
+     * reaches a supported block through its pairs.
+     */
+    void
+    check_configuration_held(const std::vector<ContactPair<dim>> &pairs,
+                             const Configuration &configuration) const;
+
+    /**
+     * make_configurations(): the blocks of an interface that the stage of
+     * @p configuration switches on are there.
+     */
+    void
+    check_switched_on(const std::vector<ContactPair<dim>> &pairs,
+                      const Configuration                 &configuration) const;
+
+    /**
+     * switch_configuration(): a line where the pairs of an interface
+     * switched on now begin with the blocks overlapping.
+     */
+    void
+    warn_of_overlap(const Configuration             &earlier,
+                    const Configuration             &next,
+                    const std::vector<unsigned int> &earlier_pair) const;
+
+    /** The gap of every pair of the model as the mesh gives it. */
+    std::vector<double> mesh_gaps;
+
+    /**
+     * solve_pass(): what is left at @p time of the forces released on
+     * block @p b.
+     */
+    void
+    add_released_forces(const unsigned int b, const double time);
+    /** The contact solver of the present stage (nullptr: no interfaces). */
+    ContactSolver<dim> *contact = nullptr;
     /** Formulation "both": the monolithic solve beside the condensed one. */
     std::unique_ptr<ContactSolver<dim>> reference;
     /** VTU/PVD of the blocks and of the pairs (with VTU output on). */
@@ -316,7 +427,7 @@ namespace mbfem
     double monolithic_seconds = 0.;
 
     /** Water pressure in the joints, if any joint is wet. */
-    std::unique_ptr<JointWater<dim>> water;
+    JointWater<dim> *water = nullptr;
 
     /** A trial of strength reduction: nothing printed or written. */
     bool trial_run = false;

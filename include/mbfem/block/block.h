@@ -24,6 +24,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -132,6 +133,29 @@ namespace mbfem
 
     void
     factorize();
+
+    /**
+     * A block that a stage adds ('Load history/Added blocks'): it carries
+     * no load before @p start, and its loads grow linearly from 0 at
+     * @p start to full at @p end.
+     */
+    void
+    set_added(const double start, const double end);
+
+    /**
+     * A block that a stage removes ('Load history/Removed blocks'): gone
+     * after @p start, with no load.
+     */
+    void
+    set_removed(const double start);
+
+    /**
+     * The fraction of its loads the block carries at @p time: 1 for a
+     * block there from the start, 0 before a stage adds it and after one
+     * removes it.
+     */
+    double
+    presence(const double time) const;
 
     /** Load vector and constraint values at pseudo-time @p time. */
     void
@@ -385,7 +409,11 @@ namespace mbfem
                          const Vector<double> &cell_load,
                          FEValues<dim>        &state_values);
 
-    PlasticState<dim>              plastic;
+    PlasticState<dim> plastic;
+    /** The stage that adds the block, in t (see set_added()). */
+    double added_from = -1., added_until = 0.;
+    double removed_after = std::numeric_limits<double>::infinity();
+
     const InSituStress            *in_situ    = nullptr;
     const Excavation              *excavation = nullptr;
     AffineConstraints<double>      physical_constraints;

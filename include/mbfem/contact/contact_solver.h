@@ -117,6 +117,32 @@ namespace mbfem
     void
     setup(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
 
+    /**
+     * setup() for the pairs of one stage of a model whose stages add
+     * blocks: the blocks @p present marks false are not there yet (no
+     * floating modes; no pair of this solver touches them). Condensed only.
+     */
+    void
+    setup(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+          const std::vector<bool>                        &present);
+
+    /**
+     * The start of a stage that adds blocks or switches interfaces on:
+     * this solver, built over the pairs there from now on, takes over what
+     * @p earlier (the solver of the stage before) committed for the pairs
+     * both have, @p earlier_pair[k] being pair k's index in @p earlier
+     * (numbers::invalid_unsigned_int for a pair new at this stage): states,
+     * broken joints, slips, gaps, forces, floating amplitudes, and the
+     * strength factor of restart(). A new pair starts closed, stuck and
+     * unloaded where its two sides are now (from @p blocks' displacements):
+     * gap zero, its slip measured from here, as for a block cast onto the
+     * deformed ones. Condensed only.
+     */
+    void
+    continue_from(const ContactSolver                            &earlier,
+                  const std::vector<unsigned int>                &earlier_pair,
+                  const std::vector<std::unique_ptr<Block<dim>>> &blocks);
+
     ContactFormulation
     formulation() const;
 
@@ -143,6 +169,18 @@ namespace mbfem
      */
     void
     set_state_methods(const StateMethodParameters &parameters);
+
+    /**
+     * With @p on, an increment whose fast iteration and load path fail
+     * asks the statics certificate first, with the joints broken at the
+     * start of the increment (breaking only takes strength away): if no
+     * admissible forces exist, it ends with ExcNoEquilibrium at once,
+     * without the semismooth Newton method, Lemke's method and the load
+     * continuation. A trial of strength reduction needs only that verdict;
+     * a plain run keeps the chain, whose failures its message reports.
+     */
+    void
+    set_early_verdict(const bool on);
 
     /** Accepts the converged increment as the start of the next one. */
     void
@@ -202,9 +240,20 @@ namespace mbfem
     double
     gap(const unsigned int k) const;
 
-    /** Tangential relative displacement (accumulated slip) in the frame. */
+    /**
+     * Tangential relative displacement (accumulated slip) in the frame,
+     * since the pair began: a pair new at a stage (continue_from()) counts
+     * from there.
+     */
     Tensor<1, dim>
     slip(const unsigned int k) const;
+
+    /**
+     * The gap pair k had when it began: the mesh's, or 0 for a pair new at
+     * a stage (closed where its sides were; continue_from()).
+     */
+    double
+    starting_gap(const unsigned int k) const;
 
     ContactState
     state(const unsigned int k) const;
@@ -675,6 +724,25 @@ namespace mbfem
     std::vector<ContactPair<dim>> contact_pairs;
     /** The nominal joint law of every pair (strength reduction divides it). */
     std::vector<JointLaw> nominal_joints;
+    /**
+     * The relative displacement of each pair where it began: zero, or
+     * its sides' at the stage that brought it (continue_from()).
+     */
+    std::vector<Tensor<1, dim>> start_displacement;
+
+    /** See set_early_verdict(). */
+    bool early_verdict = false;
+
+    /**
+     * The statics certificate's LPs for the increment's loads, with the
+     * pairs' broken flags @p broken (certify() solves and formats it).
+     */
+    StaticAdmissibility<dim>
+    statics(const std::vector<bool> &broken) const;
+
+    /** The arguments of the last restart(), for continue_from(). */
+    double strength_factor = 1.;
+    bool   reduce_tension  = true;
     /** The states before the first increment, for restart(). */
     Trial                    initial;
     const unsigned int       max_iterations;

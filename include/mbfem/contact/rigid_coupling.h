@@ -27,10 +27,16 @@ namespace mbfem
   class RigidCoupling
   {
   public:
-    /** Numbers the modes of @p blocks and builds P_hat for @p pairs. */
+    /**
+     * Numbers the modes of @p blocks and builds P_hat for @p pairs. A
+     * block that @p present marks false (one a later stage adds) has no
+     * modes here: it carries no load and touches nothing, so it stays put.
+     * Empty: every block is present.
+     */
     void
     setup(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
-          const std::vector<ContactPair<dim>>            &pairs);
+          const std::vector<ContactPair<dim>>            &pairs,
+          const std::vector<bool>                        &present = {});
 
     /** All amplitudes (the floating modes of every block). */
     unsigned int

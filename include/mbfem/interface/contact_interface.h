@@ -178,6 +178,14 @@ namespace mbfem
     {
       return Point<dim>(0.5 * (a.point + b.point));
     }
+
+    /**
+     * u_b - u_a in global components (sum_i w_i u(node_i) over each side),
+     * from the displacements of @p blocks (Block::get_solution()).
+     */
+    Tensor<1, dim>
+    relative_displacement(
+      const std::vector<std::unique_ptr<Block<dim>>> &blocks) const;
   };
 
 

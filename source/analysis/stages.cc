@@ -1,0 +1,502 @@
+// Stages that add blocks or switch interfaces on (issue 28, part 3): the
+// model's configurations, one contact solver each, and the hand-over from
+// one to the next (doc/dam_safety.md, "Stages that add blocks").
+
+#include <mbfem/analysis/multibody_problem.h>
+#include <mbfem/base/parameters.h>
+
+#include <deal.II/base/types.h>
+
+#include <algorithm>
+#include <string>
+
+namespace mbfem
+{
+  namespace
+  {
+    std::string
+    quoted(const std::string &name)
+    {
+      return "'" + name + "'";
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::check_staged_model()
+  {
+    const LoadHistory &history = parameters.load_history;
+    if (!history.changes_model())
+      return;
+    const std::string what =
+      "'Load history/Added blocks' and 'Interfaces switched on'";
+    AssertThrow(!parameters.contact.declares_interfaces() ||
+                  !parameters.contact.runs_monolithic(),
+                ExcMessage(what + " work with the condensed formulation "
+                                  "only: set 'Contact/Formulation = "
+                                  "condensed'."));
+    AssertThrow(!parameters.plasticity.enabled,
+                ExcMessage(what + " work with elastic blocks only "
+                                  "('Plasticity/Enabled = false')."));
+    AssertThrow(!parameters.in_situ_stress.enabled,
+                ExcMessage(what + " cannot be combined with an in-situ "
+                                  "stress (whose equilibrium holds for all "
+                                  "blocks from the start)."));
+
+    // Every added or removed block is a block of the mesh.
+    const auto is_block = [&](const unsigned int id) {
+      return std::any_of(blocks.begin(), blocks.end(), [id](const auto &b) {
+        return b->get_id() == id;
+      });
+    };
+    for (const auto &stage : history.stages)
+      for (const bool adds : {true, false})
+        for (const unsigned int id :
+             (adds ? stage.added_blocks : stage.removed_blocks))
+          AssertThrow(is_block(id),
+                      ExcMessage(std::string("Load history/") +
+                                 (adds ? "Added" : "Removed") +
+                                 " blocks: stage " + quoted(stage.name) +
+                                 (adds ? " adds" : " removes") + " block " +
+                                 std::to_string(id) +
+                                 ", but no block of the mesh has material "
+                                 "id " +
+                                 std::to_string(id) + "."));
+    // A block is removed after the stage that adds it (the first stage's
+    // entries are refused by LoadHistory: nothing came before them).
+    for (unsigned int s = 0; s < history.stages.size(); ++s)
+      for (const unsigned int id : history.stages[s].removed_blocks)
+        {
+          const unsigned int added = history.stage_adding_block(id);
+          AssertThrow(added == numbers::invalid_unsigned_int || added < s,
+                      ExcMessage("Load history/Removed blocks: stage " +
+                                 quoted(history.stages[s].name) +
+                                 " removes block " + std::to_string(id) +
+                                 ", which is added only by stage " +
+                                 quoted(history
+                                          .stages[std::min<unsigned int>(
+                                            added, history.stages.size() - 1)]
+                                          .name) +
+                                 ": a block is removed after the stage that "
+                                 "adds it."));
+        }
+    // Every interface switched on is a declared one, numbered as declared
+    // ('all' puts the interfaces it finds before them).
+    const auto &interfaces = parameters.contact.interfaces;
+    AssertThrow(!parameters.contact.all_shared_faces ||
+                  std::all_of(history.stages.begin(),
+                              history.stages.end(),
+                              [](const auto &stage) {
+                                return stage.interfaces_on.empty();
+                              }),
+                ExcMessage("Load history/Interfaces switched on numbers the "
+                           "entries of 'Contact/Interfaces', which 'all' "
+                           "renumbers with the interfaces it finds; declare "
+                           "the interfaces one by one."));
+    for (const auto &stage : history.stages)
+      for (const unsigned int number : stage.interfaces_on)
+        AssertThrow(number >= 1 && number <= interfaces.size() &&
+                      !interfaces[number - 1].found,
+                    ExcMessage("Load history/Interfaces switched on: stage " +
+                               quoted(stage.name) + " switches on interface " +
+                               std::to_string(number) +
+                               ", but 'Contact/Interfaces' declares " +
+                               std::to_string(std::count_if(interfaces.begin(),
+                                                            interfaces.end(),
+                                                            [](const auto &i) {
+                                                              return !i.found;
+                                                            })) +
+                               " (numbered from 1)."));
+
+    // An added block does not move before its stage: its supports may not
+    // move it (prescribed values zero until then), and no platen holds it.
+    auto &conditions = parameters.boundary_conditions;
+    for (auto &block : blocks)
+      {
+        const unsigned int removing =
+          history.stage_removing_block(block->get_id());
+        if (removing != numbers::invalid_unsigned_int)
+          block->set_removed(history.stage_times(removing).first);
+        const unsigned int s = history.stage_adding_block(block->get_id());
+        if (s == numbers::invalid_unsigned_int)
+          continue;
+        const auto [start, end] = history.stage_times(s);
+        block->set_added(start, end);
+        for (const auto &face :
+             block->get_triangulation().active_face_iterators())
+          {
+            if (!face->at_boundary())
+              continue;
+            const auto id = face->boundary_id();
+            AssertThrow(conditions.rigid_platens.count(id) == 0,
+                        ExcMessage(block->name() + ", which stage " +
+                                   quoted(history.stages[s].name) +
+                                   " adds, touches the rigid platen of "
+                                   "boundary id " +
+                                   std::to_string(id) +
+                                   ": a platen would move it before it is "
+                                   "there."));
+            const auto support = conditions.dirichlet.find(id);
+            if (support == conditions.dirichlet.end())
+              continue;
+            Vector<double> value(dim);
+            for (unsigned int k = 0;
+                 k <= history.n_increments && history.time(k) <= start;
+                 ++k)
+              {
+                conditions.set_time(history.time(k));
+                for (const unsigned int v : face->vertex_indices())
+                  {
+                    conditions.prescribed_displacement->vector_value(
+                      face->vertex(v), value);
+                    for (unsigned int c = 0; c < dim; ++c)
+                      AssertThrow(
+                        !support->second[c] || value[c] == 0.,
+                        ExcMessage(
+                          block->name() + ", which stage " +
+                          quoted(history.stages[s].name) +
+                          " adds, has a prescribed displacement of " +
+                          std::to_string(value[c]) +
+                          " at t = " + std::to_string(history.time(k)) +
+                          " on boundary id " + std::to_string(id) +
+                          ", before it is there: 'Boundary conditions/"
+                          "Prescribed displacement' must be zero on an added "
+                          "block until its stage begins."));
+                  }
+              }
+          }
+      }
+    conditions.set_time(0.);
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::make_configurations(
+    const std::vector<ContactPair<dim>> &pairs,
+    const std::function<std::unique_ptr<ContactSolver<dim>>(
+      std::vector<ContactPair<dim>>)>   &make_solver)
+  {
+    const LoadHistory &history = parameters.load_history;
+    const unsigned int n_stages =
+      std::max<std::size_t>(history.stages.size(), 1);
+    for (const auto &pair : pairs)
+      mesh_gaps.push_back(pair.initial_gap);
+    for (unsigned int s = 0; s < n_stages; ++s)
+      {
+        Configuration configuration;
+        configuration.first_stage = s;
+        for (const auto &block : blocks)
+          {
+            const unsigned int added =
+              history.stage_adding_block(block->get_id());
+            const unsigned int removed =
+              history.stage_removing_block(block->get_id());
+            configuration.present.push_back(
+              (added == numbers::invalid_unsigned_int || added <= s) &&
+              (removed == numbers::invalid_unsigned_int || s < removed));
+          }
+        for (unsigned int k = 0; k < pairs.size(); ++k)
+          {
+            const unsigned int on =
+              history.stage_switching_on(pairs[k].interface + 1);
+            if (configuration.present[pairs[k].a.block] &&
+                configuration.present[pairs[k].b.block] &&
+                (on == numbers::invalid_unsigned_int || on <= s))
+              configuration.pairs.push_back(k);
+          }
+        if (!configurations.empty() &&
+            configuration.present == configurations.back().present &&
+            configuration.pairs == configurations.back().pairs)
+          continue;
+
+        check_configuration_held(pairs, configuration);
+        check_switched_on(pairs, configuration);
+
+        std::vector<ContactPair<dim>> subset;
+        for (const unsigned int k : configuration.pairs)
+          subset.push_back(pairs[k]);
+        configuration.solver = make_solver(std::move(subset));
+        if (history.changes_model())
+          configuration.solver->setup(blocks, configuration.present);
+        else
+          configuration.solver->setup(blocks);
+        configurations.push_back(std::move(configuration));
+      }
+    active_configuration = 0;
+    contact              = configurations[0].solver.get();
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::switch_configuration(const unsigned int k)
+  {
+    const LoadHistory &history = parameters.load_history;
+    if (!history.starts_stage(k) || !history.changes_model() ||
+        configurations.empty()) // no interfaces: loads alone change
+      return;
+    const unsigned int s = history.stage(k);
+    unsigned int       c = active_configuration;
+    while (c + 1 < configurations.size() &&
+           configurations[c + 1].first_stage <= s)
+      ++c;
+    if (c == active_configuration)
+      return;
+
+    const Configuration &earlier = configurations[active_configuration];
+    Configuration       &next    = configurations[c];
+    // Pair k of the next solver is pair earlier_pair[k] of the earlier one.
+    std::vector<unsigned int> earlier_pair;
+    for (const unsigned int global : next.pairs)
+      {
+        const auto j =
+          std::find(earlier.pairs.begin(), earlier.pairs.end(), global);
+        earlier_pair.push_back(
+          j == earlier.pairs.end() ?
+            numbers::invalid_unsigned_int :
+            static_cast<unsigned int>(j - earlier.pairs.begin()));
+      }
+    if (!trial_run)
+      warn_of_overlap(earlier, next, earlier_pair);
+    next.solver->continue_from(*earlier.solver, earlier_pair, blocks);
+    release_removed_pairs(earlier, next, s);
+    if (!trial_run)
+      {
+        std::string added, removed;
+        for (unsigned int b = 0; b < blocks.size(); ++b)
+          if (next.present[b] != earlier.present[b])
+            {
+              std::string &list = next.present[b] ? added : removed;
+              list += (list.empty() ? "" : ", ") + blocks[b]->name();
+            }
+        std::string what = added.empty() ? "" : "adds " + added + ", ";
+        if (!removed.empty())
+          what += "removes " + removed +
+                  " (the forces of its pairs on the blocks that stay are "
+                  "released over the stage), ";
+        const auto n_new = std::count(earlier_pair.begin(),
+                                      earlier_pair.end(),
+                                      numbers::invalid_unsigned_int);
+        if (n_new > 0)
+          what += "brings " + std::to_string(n_new) +
+                  " new pair(s), closed where they are; ";
+        pcout << "  the stage " << what << next.pairs.size()
+              << " pairs from here on\n";
+      }
+    active_configuration = c;
+    contact              = next.solver.get();
+    water                = next.water.get();
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::release_removed_pairs(const Configuration &earlier,
+                                               const Configuration &next,
+                                               const unsigned int   s)
+  {
+    const auto [start, end]          = parameters.load_history.stage_times(s);
+    const ContactSolver<dim> &solver = *earlier.solver;
+    for (unsigned int j = 0; j < earlier.pairs.size(); ++j)
+      {
+        const ContactPair<dim> &pair = solver.pairs()[j];
+        if (next.present[pair.a.block] && next.present[pair.b.block])
+          continue; // the pair stays (or its interface was on already)
+        const Tensor<1, dim> r = solver.force(j);
+        // Water in the joint pushes each face away from the other.
+        const double p_w =
+          earlier.water ? earlier.water->pressure(j, start) : 0.;
+        for (const int sign : {-1, 1})
+          {
+            const auto &side = pair.side(sign);
+            if (!next.present[side.block])
+              continue;
+            const Tensor<1, dim> f =
+              sign * (r + p_w * pair.area * pair.frame[0]);
+            ReleasedForces forces;
+            forces.block = side.block;
+            forces.start = start;
+            forces.end   = end;
+            for (const auto &node : side.nodes)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  forces.dofs.push_back(node.dofs[c]);
+                  forces.forces.push_back(node.weight * f[c]);
+                }
+            released.push_back(std::move(forces));
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::add_released_forces(const unsigned int b,
+                                             const double       time)
+  {
+    for (const auto &forces : released)
+      {
+        if (forces.block != b)
+          continue;
+        const double left =
+          1. - std::clamp((time - forces.start) / (forces.end - forces.start),
+                          0.,
+                          1.);
+        if (left == 0.)
+          continue;
+        std::vector<double> values = forces.forces;
+        for (double &value : values)
+          value *= left;
+        blocks[forces.block]->add_external_point_forces(forces.dofs, values);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::check_configuration_held(
+    const std::vector<ContactPair<dim>> &pairs,
+    const Configuration                 &configuration) const
+  {
+    // Every floating block there must reach a supported block through the
+    // pairs of the configuration (a stage that removes a block removes its
+    // pairs, one that adds it or switches an interface on brings them).
+    const unsigned int n = blocks.size();
+    std::vector<bool>  held(n, false);
+    for (unsigned int b = 0; b < n; ++b)
+      held[b] =
+        configuration.present[b] && blocks[b]->free_rigid_body_modes().empty();
+    for (bool grown = true; grown;)
+      {
+        grown = false;
+        for (const unsigned int k : configuration.pairs)
+          {
+            const unsigned int a = pairs[k].a.block, b = pairs[k].b.block;
+            if (held[a] != held[b])
+              held[a] = held[b] = grown = true;
+          }
+      }
+    const LoadHistory &history = parameters.load_history;
+    const std::string  stage =
+      history.stages.empty() ?
+         std::string("(the only one)") :
+         quoted(history.stages[configuration.first_stage].name);
+    for (unsigned int b = 0; b < n; ++b)
+      AssertThrow(!configuration.present[b] || held[b],
+                  ExcMessage(blocks[b]->name() + " is not held in stage " +
+                             stage +
+                             ": it has free rigid-body modes, and no chain "
+                             "of pairs there links it to a supported block "
+                             "(a block is held by its pairs only from the "
+                             "stage that adds it or switches their interface "
+                             "on, until the stage that removes it or its "
+                             "neighbour)."));
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::check_switched_on(
+    const std::vector<ContactPair<dim>> &pairs,
+    const Configuration                 &configuration) const
+  {
+    // An interface switched on while a block of it is not there yet would
+    // silently begin with that block instead.
+    const LoadHistory &history = parameters.load_history;
+    const unsigned int s       = configuration.first_stage;
+    for (const auto &pair : pairs)
+      {
+        if (history.stage_switching_on(pair.interface + 1) != s)
+          continue;
+        for (const auto *side : {&pair.a, &pair.b})
+          AssertThrow(configuration.present[side->block],
+                      ExcMessage("Load history/Interfaces switched on: stage " +
+                                 quoted(history.stages[s].name) +
+                                 " switches on interface " +
+                                 std::to_string(pair.interface + 1) + ", but " +
+                                 blocks[side->block]->name() +
+                                 " is not there in that stage."));
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::warn_of_overlap(
+    const Configuration             &earlier,
+    const Configuration             &next,
+    const std::vector<unsigned int> &earlier_pair) const
+  {
+    // A switched-on interface between blocks that were both there: they
+    // did not touch, so they may have moved into each other.
+    double overlap = 0.;
+    for (unsigned int k = 0; k < next.pairs.size(); ++k)
+      {
+        const ContactPair<dim> &pair = next.solver->pairs()[k];
+        if (earlier_pair[k] != numbers::invalid_unsigned_int ||
+            !earlier.present[pair.a.block] || !earlier.present[pair.b.block])
+          continue;
+        const double gap = mesh_gaps[next.pairs[k]] +
+                           pair.frame[0] * pair.relative_displacement(blocks);
+        overlap = std::max(overlap, -gap);
+      }
+    if (overlap > 0.)
+      pcout << "  warning: while their interface was off, the blocks of a "
+               "pair switched on now moved into each other, by up to "
+            << overlap
+            << " (they do not touch before; its pairs close where they "
+               "are)\n";
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::restart_contact(const double factor)
+  {
+    released.clear();
+    active_configuration = 0;
+    contact              = configurations[0].solver.get();
+    water                = configurations[0].water.get();
+    contact->restart(factor,
+                     parameters.strength_reduction.reduce_tensile_strength);
+  }
+
+
+
+  // The members defined in this file (the class itself is instantiated in
+  // multibody_problem.cc).
+#define MBFEM_INSTANTIATE(dim)                                             \
+  template void MultiBodyProblem<dim>::check_staged_model();               \
+  template void MultiBodyProblem<dim>::make_configurations(                \
+    const std::vector<ContactPair<dim>> &,                                 \
+    const std::function<std::unique_ptr<ContactSolver<dim>>(               \
+      std::vector<ContactPair<dim>>)> &);                                  \
+  template void MultiBodyProblem<dim>::switch_configuration(unsigned int); \
+  template void MultiBodyProblem<dim>::restart_contact(double);            \
+  template void MultiBodyProblem<dim>::release_removed_pairs(              \
+    const Configuration &, const Configuration &, unsigned int);           \
+  template void MultiBodyProblem<dim>::check_configuration_held(           \
+    const std::vector<ContactPair<dim>> &, const Configuration &) const;   \
+  template void MultiBodyProblem<dim>::check_switched_on(                  \
+    const std::vector<ContactPair<dim>> &, const Configuration &) const;   \
+  template void MultiBodyProblem<dim>::warn_of_overlap(                    \
+    const Configuration &,                                                 \
+    const Configuration &,                                                 \
+    const std::vector<unsigned int> &) const;                              \
+  template void MultiBodyProblem<dim>::add_released_forces(unsigned int,   \
+                                                           double);
+  MBFEM_INSTANTIATE(2)
+  MBFEM_INSTANTIATE(3)
+#undef MBFEM_INSTANTIATE
+} // namespace mbfem
