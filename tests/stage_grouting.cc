@@ -15,14 +15,13 @@
 // Checked to 1e-9 of the largest value (round-off; measured when written:
 // 1.7e-15 for the displacements, 1.2e-14 for the forces).
 
-#include <mbfem/analysis/multibody_problem.h>
-#include <mbfem/base/parameters.h>
-
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+
+#include "run_model.h"
 
 using namespace dealii;
 
@@ -96,29 +95,15 @@ subsection Boundary conditions
 end
 )";
 
-std::unique_ptr<mbfem::MultiBodyProblem<2>>
-run(const std::string &text, mbfem::Parameters<2> &parameters)
-{
-  ParameterHandler prm;
-  mbfem::Parameters<2>::declare_parameters(prm);
-  prm.parse_input_from_string(text);
-  parameters.parse_parameters(prm, ".");
-  static ConditionalOStream quiet(std::cout, false);
-  auto                      problem =
-    std::make_unique<mbfem::MultiBodyProblem<2>>(parameters, quiet);
-  problem->run();
-  return problem;
-}
-
 int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   mbfem::Parameters<2> p_staged, p_push, p_weight;
-  const auto           a = run(model + joint + staged, p_staged);
-  const auto           b = run(model + joint + push_alone, p_push);
-  const auto           c = run(model + weight_alone, p_weight);
+  const auto           a = run_model(model + joint + staged, p_staged);
+  const auto           b = run_model(model + joint + push_alone, p_push);
+  const auto           c = run_model(model + weight_alone, p_weight);
 
   double u_difference = 0., u_max = 0.;
   for (unsigned int i = 0; i < a->get_blocks().size(); ++i)

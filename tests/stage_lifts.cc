@@ -14,44 +14,17 @@
 // node to 1e-9 of the largest settlement: the fields lie in the finite
 // element space, so only round-off is left (measured when written: 1.6e-15).
 
-#include <mbfem/analysis/multibody_problem.h>
-#include <mbfem/base/parameters.h>
-
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 
+#include "run_model.h"
+
 using namespace dealii;
 
-const std::string column = R"(
-set Dimension = 2
-set Test mode = true
-subsection Mesh
-  set Generator arguments = 2,6 : 0,0 : 1,3 : true
-  set Block id function   = 1 + (y > 1) + (y > 2)
-end
-subsection Finite element
-  set Polynomial degree = 2
-end
-subsection Material
-  set Young's modulus = 20e9
-  set Poisson's ratio = 0
-  set Unit weight     = 24e3
-end
-subsection Boundary conditions
-  set Prescribed displacement boundary ids = 2: xy
-end
-subsection Contact
-  set Interfaces           = blocks 1:2; blocks 2:3
-  set Friction coefficient = 1
-end
-subsection Output
-  set Write VTU = false
-  set Directory = results
-end
-)";
+const std::string column = column_of_three_blocks;
 
 const std::string in_lifts = R"(
 subsection Load history
@@ -61,20 +34,6 @@ end
 )";
 
 constexpr double H = 3., g = 24e3, E = 20e9;
-
-std::unique_ptr<mbfem::MultiBodyProblem<2>>
-run(const std::string &text, mbfem::Parameters<2> &parameters)
-{
-  ParameterHandler prm;
-  mbfem::Parameters<2>::declare_parameters(prm);
-  prm.parse_input_from_string(text);
-  parameters.parse_parameters(prm, ".");
-  static ConditionalOStream quiet(std::cout, false);
-  auto                      problem =
-    std::make_unique<mbfem::MultiBodyProblem<2>>(parameters, quiet);
-  problem->run();
-  return problem;
-}
 
 /** The settlement of height y in the lift from y0 (y0 = 0: all at once). */
 double
@@ -119,8 +78,8 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   mbfem::Parameters<2> at_once_parameters, lifts_parameters;
-  const auto           at_once = run(column, at_once_parameters);
-  const auto           lifts   = run(column + in_lifts, lifts_parameters);
+  const auto           at_once = run_model(column, at_once_parameters);
+  const auto           lifts   = run_model(column + in_lifts, lifts_parameters);
 
   const double scale = 4.5 * g * H * H / (9. * E);
   for (const bool in_lifts : {false, true})

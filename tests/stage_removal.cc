@@ -14,9 +14,6 @@
 // still on the base joint: its normal force is g (1 + 1/2) per unit
 // width, read from the pair CSV of that increment.
 
-#include <mbfem/analysis/multibody_problem.h>
-#include <mbfem/base/parameters.h>
-
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
@@ -25,35 +22,11 @@
 #include <iostream>
 #include <sstream>
 
+#include "run_model.h"
+
 using namespace dealii;
 
-const std::string column = R"(
-set Dimension = 2
-set Test mode = true
-subsection Mesh
-  set Generator arguments = 2,6 : 0,0 : 1,3 : true
-  set Block id function   = 1 + (y > 1) + (y > 2)
-end
-subsection Finite element
-  set Polynomial degree = 2
-end
-subsection Material
-  set Young's modulus = 20e9
-  set Poisson's ratio = 0
-  set Unit weight     = 24e3
-end
-subsection Boundary conditions
-  set Prescribed displacement boundary ids = 2: xy
-end
-subsection Contact
-  set Interfaces           = blocks 1:2; blocks 2:3
-  set Friction coefficient = 1
-end
-subsection Output
-  set Write VTU = false
-  set Directory = results
-end
-)";
+const std::string column = column_of_three_blocks;
 
 const std::string removal = R"(
 subsection Load history
@@ -66,20 +39,6 @@ end
 )";
 
 constexpr double g = 24e3, E = 20e9;
-
-std::unique_ptr<mbfem::MultiBodyProblem<2>>
-run(const std::string &text, mbfem::Parameters<2> &parameters)
-{
-  ParameterHandler prm;
-  mbfem::Parameters<2>::declare_parameters(prm);
-  prm.parse_input_from_string(text);
-  parameters.parse_parameters(prm, ".");
-  static ConditionalOStream quiet(std::cout, false);
-  auto                      problem =
-    std::make_unique<mbfem::MultiBodyProblem<2>>(parameters, quiet);
-  problem->run();
-  return problem;
-}
 
 /**
  * The settlement of height y of the two lower blocks with a fraction
@@ -97,7 +56,7 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   mbfem::Parameters<2> parameters;
-  const auto           problem    = run(column + removal, parameters);
+  const auto           problem    = run_model(column + removal, parameters);
   double               difference = 0., scale = 0.;
   for (const auto &block : problem->get_blocks())
     {
