@@ -220,10 +220,7 @@ namespace mbfem
         for (const unsigned int k : configuration.pairs)
           subset.push_back(pairs[k]);
         configuration.solver = make_solver(std::move(subset));
-        if (history.changes_model())
-          configuration.solver->setup(blocks, configuration.present);
-        else
-          configuration.solver->setup(blocks);
+        configuration.solver->setup(blocks, configuration.present);
         configurations.push_back(std::move(configuration));
       }
     active_configuration = 0;
