@@ -23,10 +23,14 @@ namespace mbfem
   void
   NewtonJacobian::reinit(const std::vector<Row> &rows_of_a,
                          const unsigned int      n,
-                         const unsigned int      block_size)
+                         const unsigned int      block_size,
+                         const bool              mode_diagonal)
   {
     n_rows_of_a = rows_of_a.size();
     DynamicSparsityPattern dsp(n, n);
+    if (mode_diagonal)
+      for (unsigned int i = n_rows_of_a; i < n; ++i)
+        dsp.add(i, i);
     for (unsigned int i = 0; i < n_rows_of_a; ++i)
       {
         const unsigned int first = i - i % block_size;

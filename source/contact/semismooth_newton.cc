@@ -67,6 +67,8 @@ namespace mbfem
     const std::vector<Tensor<1, dim>>        &committed_displacement)
     : max_iterations(parameters.newton_max_iterations)
     , tolerance(parameters.newton_tolerance)
+    , proximal_stiffness(parameters.proximal_stiffness)
+    , proximal_steps(parameters.proximal_steps)
     , pairs(pairs)
     , condensed(system)
     , coupling(coupling)
@@ -94,6 +96,12 @@ namespace mbfem
     bool assemble = false;
     /** Why solve_system() stopped short, for failure(). */
     std::string failure;
+    /**
+     * The proximal iteration's springs on the floating modes (stiffness
+     * relative to the contacts', 0: none) and their anchors.
+     */
+    double         spring = 0.;
+    Vector<double> anchor;
 
     void
     add_unit(const unsigned int row, const unsigned int column, const double c)
@@ -291,6 +299,11 @@ namespace mbfem
             value += c * system.u(j);
             system.add_unit(n_r + a, j, c);
           }
+        if (system.spring > 0.)
+          {
+            value -= system.spring * (system.u(n_r + a) - system.anchor(a));
+            system.add_unit(n_r + a, n_r + a, -system.spring);
+          }
         system.residual(n_r + a) = value;
       }
     return 0.5 * (system.residual * system.residual);
@@ -349,6 +362,52 @@ namespace mbfem
       short_number(system.residual.linfty_norm() / reference) +
       " of the data (tolerance " + short_number(tolerance) + ")";
     return false;
+  }
+
+
+
+  template <int dim>
+  bool
+  SemismoothNewton<dim>::solve_proximal(System               &system,
+                                        const Vector<double> &start,
+                                        unsigned int         &iterations) const
+  {
+    const unsigned int n_r = n_pairs * dim;
+    if (proximal_stiffness == 0. || coupling.n_modes() == 0)
+      return false;
+    const std::string stalled = system.failure;
+    set_matrix(system, true);
+    system.u      = start;
+    system.spring = proximal_stiffness;
+    system.anchor.reinit(coupling.n_modes());
+    bool converged = false;
+    for (unsigned int step = 0; step < proximal_steps; ++step)
+      {
+        for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+          system.anchor(a) = system.u(n_r + a);
+        if (!solve_system(system, iterations))
+          break;
+        // The springs' largest force, against the largest contact force.
+        double moved = 0.;
+        for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+          moved =
+            std::max(moved, std::abs(system.u(n_r + a) - system.anchor(a)));
+        if (system.spring * moved <= tolerance * scales(system).first)
+          {
+            system.spring = 0.;
+            converged     = solve_system(system, iterations);
+            break;
+          }
+      }
+    system.spring = 0.;
+    if (!converged)
+      system.failure =
+        stalled + "; held by springs, " +
+        (system.failure == stalled ?
+           "its blocks did not settle after " + std::to_string(proximal_steps) +
+             " moves of the springs' anchors" :
+           system.failure);
+    return converged;
   }
 
 
@@ -523,7 +582,7 @@ namespace mbfem
 
   template <int dim>
   void
-  SemismoothNewton<dim>::set_matrix(System &system) const
+  SemismoothNewton<dim>::set_matrix(System &system, const bool springs) const
   {
     // A's rows: C_hat / scale where two pairs share a block (H_b of each
     // block they share), and P_hat of the pair's blocks' modes.
@@ -557,7 +616,7 @@ namespace mbfem
         for (const auto &[column, value] : row)
           entry_of[column] = -1;
       }
-    system.linear.reinit(rows, n_r + coupling.n_modes(), dim);
+    system.linear.reinit(rows, n_r + coupling.n_modes(), dim, springs);
   }
 
 
@@ -586,7 +645,9 @@ namespace mbfem
     // limit first, and the system is solved again from where it was.
     for (unsigned int breaks = 0; breaks <= n_pairs; ++breaks)
       {
-        if (!solve_system(system, iterations))
+        const Vector<double> before = system.u;
+        if (!solve_system(system, iterations) &&
+            !solve_proximal(system, before, iterations))
           return false;
         const unsigned int worst = worst_tension(system);
         if (worst == numbers::invalid_unsigned_int)

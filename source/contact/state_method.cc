@@ -134,6 +134,22 @@ namespace mbfem
         "largest force or displacement of the increment's data. At most "
         "1e-9, the state check's tolerance, so that the states read from "
         "Newton's answer are those the check accepts.");
+      prm.declare_entry(
+        "Proximal stiffness",
+        "1e-4",
+        Patterns::Double(0.),
+        "Where Newton's method stalls (a floating block that no closed pair "
+        "holds makes its Jacobian singular), it starts again with every "
+        "floating block held by a spring to where it was, this stiff "
+        "relative to a contact, and moves the springs' anchors to the "
+        "blocks after each solve (a proximal point iteration on the rigid "
+        "motions) until the springs carry nothing; then Newton's method "
+        "without springs concludes. 0: no such second try.");
+      prm.declare_entry("Proximal steps",
+                        "100",
+                        Patterns::Integer(1),
+                        "How often the springs' anchors may move before the "
+                        "second try gives up.");
     }
     prm.leave_subsection();
     prm.enter_subsection("Lemke");
@@ -178,6 +194,8 @@ namespace mbfem
     {
       newton_max_iterations = prm.get_integer("Maximum iterations");
       newton_tolerance      = prm.get_double("Tolerance");
+      proximal_stiffness    = prm.get_double("Proximal stiffness");
+      proximal_steps        = prm.get_integer("Proximal steps");
     }
     prm.leave_subsection();
     prm.enter_subsection("Lemke");

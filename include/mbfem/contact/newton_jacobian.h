@@ -37,11 +37,14 @@ namespace mbfem
      * component; the rows of the floating blocks' unknowns beyond them are
      * zero) over @p n columns. Pair k's rows are k * @p block_size ... and
      * its own columns are in the pattern of J even where A has none there.
+     * With @p mode_diagonal, so are the diagonal entries of the rows beyond
+     * A's (the floating blocks' springs of the proximal iteration).
      */
     void
     reinit(const std::vector<Row> &rows_of_a,
            const unsigned int      n,
-           const unsigned int      block_size);
+           const unsigned int      block_size,
+           const bool              mode_diagonal = false);
 
     /** The number of unknowns. */
     unsigned int

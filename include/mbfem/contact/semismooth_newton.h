@@ -27,8 +27,11 @@ namespace mbfem
    * written as one nonsmooth system in (rho, alpha), the joint law by Alart
    * and Curnier's projections, solved by Newton's method on its generalised
    * Jacobian (sparse, NewtonJacobian) with a backtracking line search and
-   * Levenberg and Marquardt's step where that fails. Joints with strength
-   * break one at a time, the one furthest beyond its tensile limit first.
+   * Levenberg and Marquardt's step where that fails. Where it stalls, it
+   * starts again with the floating blocks held by weak springs whose
+   * anchors follow them (a proximal point iteration on the rigid motions,
+   * solve_proximal()). Joints with strength break one at a time, the one
+   * furthest beyond its tensile limit first.
    *
    * It does not decide the increment: its answer gives states, which
    * ContactSolver's fast iteration then solves and checks with the same
@@ -99,6 +102,18 @@ namespace mbfem
     solve_system(System &system, unsigned int &iterations) const;
 
     /**
+     * Where solve_system() stalled: from @p start again, every floating
+     * block held by a spring to an anchor that moves to the block after
+     * each solve, until the springs carry nothing; then once more without
+     * springs. The Jacobian stays regular while a block has no closed
+     * pair, and each solve is a well-posed contact problem.
+     */
+    bool
+    solve_proximal(System               &system,
+                   const Vector<double> &start,
+                   unsigned int         &iterations) const;
+
+    /**
      * solve_system()'s step: Newton's direction from the Jacobian (which
      * it factorises), cut to @p trust, with backtracking; false if the
      * Jacobian is singular or no length decreases 1/2 |F|^2.
@@ -118,7 +133,7 @@ namespace mbfem
      * only.
      */
     void
-    set_matrix(System &system) const;
+    set_matrix(System &system, const bool springs = false) const;
 
     /** The states (and slip directions) of @p system's answer. */
     StateTrial<dim>
@@ -138,6 +153,8 @@ namespace mbfem
 
     const unsigned int                        max_iterations;
     const double                              tolerance;
+    const double                              proximal_stiffness;
+    const unsigned int                        proximal_steps;
     const std::vector<ContactPair<dim>>      &pairs;
     const CondensedSystem<dim>               &condensed;
     const RigidCoupling<dim>                 &coupling;

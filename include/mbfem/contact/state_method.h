@@ -92,6 +92,15 @@ namespace mbfem
      */
     double newton_tolerance = 1e-11;
     /**
+     * Where Newton's method stalls, it is run again with the floating
+     * blocks held by springs to where they were (a proximal point
+     * iteration on their rigid motions): the springs' stiffness relative
+     * to the contact stiffness (doc/state_iteration.md), and the number of
+     * times the springs' anchors may follow the blocks.
+     */
+    double       proximal_stiffness = 1e-4;
+    unsigned int proximal_steps     = 100;
+    /**
      * The load continuation's load factors (of the increment, from the
      * last converged state), the last 1: from ten times the load back to
      * it.
