@@ -376,6 +376,9 @@ namespace mbfem
     if (proximal_stiffness == 0. || coupling.n_modes() == 0)
       return false;
     const std::string stalled = system.failure;
+    std::string       why     = "its blocks did not settle after " +
+                      std::to_string(proximal_steps) +
+                      " moves of the springs' anchors";
     set_matrix(system, true);
     system.u      = start;
     system.spring = proximal_stiffness;
@@ -386,7 +389,10 @@ namespace mbfem
         for (unsigned int a = 0; a < coupling.n_modes(); ++a)
           system.anchor(a) = system.u(n_r + a);
         if (!solve_system(system, iterations))
-          break;
+          {
+            why = system.failure;
+            break;
+          }
         // The springs' largest force, against the largest contact force.
         double moved = 0.;
         for (unsigned int a = 0; a < coupling.n_modes(); ++a)
@@ -396,17 +402,13 @@ namespace mbfem
           {
             system.spring = 0.;
             converged     = solve_system(system, iterations);
+            why           = system.failure + " (once the springs were off)";
             break;
           }
       }
     system.spring = 0.;
     if (!converged)
-      system.failure =
-        stalled + "; held by springs, " +
-        (system.failure == stalled ?
-           "its blocks did not settle after " + std::to_string(proximal_steps) +
-             " moves of the springs' anchors" :
-           system.failure);
+      system.failure = stalled + "; held by springs, " + why;
     return converged;
   }
 
