@@ -102,6 +102,8 @@ namespace mbfem
      */
     double         spring = 0.;
     Vector<double> anchor;
+    /** Whether the Jacobian's pattern holds the springs' entries. */
+    bool pattern_has_springs = false;
 
     void
     add_unit(const unsigned int row, const unsigned int column, const double c)
@@ -379,7 +381,9 @@ namespace mbfem
     std::string       why     = "its blocks did not settle after " +
                       std::to_string(proximal_steps) +
                       " moves of the springs' anchors";
-    set_matrix(system, true);
+    // Once per solve(): later breaks reuse the pattern with the springs.
+    if (!system.pattern_has_springs)
+      set_matrix(system, true);
     system.u      = start;
     system.spring = proximal_stiffness;
     system.anchor.reinit(coupling.n_modes());
@@ -619,6 +623,7 @@ namespace mbfem
           entry_of[column] = -1;
       }
     system.linear.reinit(rows, n_r + coupling.n_modes(), dim, springs);
+    system.pattern_has_springs = springs;
   }
 
 
