@@ -50,6 +50,8 @@ namespace mbfem
     pattern.copy_from(dsp);
     a_matrix.reinit(pattern);
     jacobian.reinit(pattern);
+    augmented.clear();
+    augmented_pattern.reinit(0, 0, 0);
     for (unsigned int i = 0; i < n_rows_of_a; ++i)
       for (const auto &[column, value] : rows_of_a[i])
         a_matrix.add(i, column, value);
@@ -108,14 +110,8 @@ namespace mbfem
   bool
   NewtonJacobian::solve(Vector<double> &b)
   {
-    try
-      {
-        lu.factorize(jacobian);
-      }
-    catch (const SparseDirectUMFPACK::ExcUMFPACKError &)
-      {
-        return false; // a zero pivot (UMFPACK's warning, thrown by deal.II)
-      }
+    if (!lu.factorize(jacobian))
+      return false; // a zero pivot
     lu.solve(b);
     return all_finite(b);
   }
@@ -134,20 +130,24 @@ namespace mbfem
     for (auto entry = jacobian.begin(); entry != jacobian.end(); ++entry)
       column_norm[entry->column()] += entry->value() * entry->value();
 
-    DynamicSparsityPattern dsp(2 * n, 2 * n);
-    for (unsigned int i = 0; i < n; ++i)
+    if (augmented_pattern.n_rows() != 2 * n)
       {
-        dsp.add(i, i);
-        dsp.add(n + i, n + i);
-        for (auto entry = jacobian.begin(i); entry != jacobian.end(i); ++entry)
+        DynamicSparsityPattern dsp(2 * n, 2 * n);
+        for (unsigned int i = 0; i < n; ++i)
           {
-            dsp.add(i, n + entry->column());
-            dsp.add(n + entry->column(), i);
+            dsp.add(i, i);
+            dsp.add(n + i, n + i);
+            for (auto entry = pattern.begin(i); entry != pattern.end(i);
+                 ++entry)
+              {
+                dsp.add(i, n + entry->column());
+                dsp.add(n + entry->column(), i);
+              }
           }
+        augmented_pattern.copy_from(dsp);
+        augmented.reinit(augmented_pattern);
       }
-    SparsityPattern augmented_pattern;
-    augmented_pattern.copy_from(dsp);
-    SparseMatrix<double> augmented(augmented_pattern);
+    augmented = 0.;
     for (unsigned int i = 0; i < n; ++i)
       {
         augmented.add(i, i, 1.);
@@ -161,15 +161,8 @@ namespace mbfem
     Vector<double> x(2 * n);
     for (unsigned int i = 0; i < n; ++i)
       x(i) = -residual(i);
-    SparseDirectUMFPACK augmented_lu;
-    try
-      {
-        augmented_lu.factorize(augmented);
-      }
-    catch (const SparseDirectUMFPACK::ExcUMFPACKError &)
-      {
-        return false;
-      }
+    if (!augmented_lu.factorize(augmented))
+      return false;
     augmented_lu.solve(x);
     step.reinit(n);
     for (unsigned int i = 0; i < n; ++i)

@@ -1,7 +1,8 @@
 #ifndef mbfem_contact_newton_jacobian_h
 #define mbfem_contact_newton_jacobian_h
 
-#include <deal.II/lac/sparse_direct.h>
+#include <mbfem/linear_algebra/sparse_lu.h>
+
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -88,8 +89,16 @@ namespace mbfem
   private:
     SparsityPattern      pattern;
     SparseMatrix<double> a_matrix, jacobian;
-    SparseDirectUMFPACK  lu;
-    unsigned int         n_rows_of_a = 0;
+    /** J's factors; their ordering serves every J of the pattern. */
+    SparseLU     lu;
+    unsigned int n_rows_of_a = 0;
+    /**
+     * The Levenberg-Marquardt system [I J; J^T -lambda D], its pattern
+     * built at its first use after reinit(), and its factors.
+     */
+    SparsityPattern      augmented_pattern;
+    SparseMatrix<double> augmented;
+    SparseLU             augmented_lu;
   };
 } // namespace mbfem
 
