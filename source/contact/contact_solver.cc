@@ -384,17 +384,25 @@ namespace mbfem
     Tensor<1, dim> r_t;
     for (unsigned int d = 1; d < dim; ++d)
       r_t[d] = solution(k * dim + d);
-    const double limit =
-      pair.joint.shear_strength(r_n, pair.area, trial.broken[k]);
-    if (r_n < -tension_limit - scales.force_tolerance)
+    const double r_t_norm = r_t.norm();
+    if (pair.joint.breaks(
+          r_n, pair.area, trial.broken[k], scales.force_tolerance))
       break_open(k, trial, r_n, tension_limit, scales, next, violation);
-    else if (r_t.norm() > limit + scales.force_tolerance)
+    else if (pair.joint.slips(r_n,
+                              r_t_norm,
+                              pair.area,
+                              trial.broken[k],
+                              scales.force_tolerance))
       {
         next.state[k]               = ContactState::slip;
-        next.slip_direction[k]      = -r_t / r_t.norm();
+        next.slip_direction[k]      = -r_t / r_t_norm;
         next.direction_stiffness[k] = 0.;
         next.tensile_slip[k]        = r_n < 0.;
-        violation                   = (r_t.norm() - limit) / scales.force;
+        violation                   = -pair.joint.friction_margin(r_n,
+                                                r_t_norm,
+                                                pair.area,
+                                                trial.broken[k]) /
+                    scales.force;
       }
   }
 
@@ -427,7 +435,8 @@ namespace mbfem
     const bool sticks =
       along < -scales.displacement_tolerance ||
       (dim == 3 && increment_t.norm() < scales.displacement_tolerance);
-    if (r_n < -tension_limit - scales.force_tolerance)
+    if (pair.joint.breaks(
+          r_n, pair.area, trial.broken[k], scales.force_tolerance))
       break_open(k, trial, r_n, tension_limit, scales, next, violation);
     else if (sticks)
       {

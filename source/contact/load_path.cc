@@ -216,6 +216,8 @@ namespace mbfem
         worst = {value, c};
     };
     const double tension = pair.joint.tensile_limit(pair.area, trial.broken[k]);
+    const double tension_margin =
+      pair.joint.tension_margin(rho[0], pair.area, trial.broken[k]);
     Tensor<1, dim> r_t, increment;
     for (unsigned int e = 1; e < dim; ++e)
       {
@@ -225,15 +227,14 @@ namespace mbfem
     switch (trial.state[k])
       {
         case ContactState::stick:
-          consider((rho[0] + tension) / F, Condition::tension);
-          consider(
-            (pair.joint.shear_strength(rho[0], pair.area, trial.broken[k]) -
-             r_t.norm()) /
-              F,
-            Condition::friction);
+          consider(tension_margin / F, Condition::tension);
+          consider(pair.joint.friction_margin(
+                     rho[0], r_t.norm(), pair.area, trial.broken[k]) /
+                     F,
+                   Condition::friction);
           break;
         case ContactState::slip:
-          consider((rho[0] + tension) / F, Condition::tension);
+          consider(tension_margin / F, Condition::tension);
           consider(increment * trial.slip_direction[k] / D,
                    Condition::reversal);
           if (tension > 0.)

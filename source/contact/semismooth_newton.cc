@@ -146,16 +146,13 @@ namespace mbfem
                                 const double       xi,
                                 const System      &system) const
   {
-    // The friction disc's radius, times scale: cohesion only for a joint
-    // held closed (a unilateral pair's disc would otherwise not vanish
-    // when it opens); the polishing fast iteration checks the real
-    // strength.
-    const auto  &pair     = pairs[k];
-    const double cohesion = is_bilateral(k, system.broken) ?
-                              pair.joint.shear_strength(0., pair.area, false) :
-                              0.;
-    return condensed.scale() * cohesion +
-           pair.joint.friction_coefficient * std::max(xi, 0.);
+    // Cohesion only for a joint held closed; the polishing fast iteration
+    // checks the real strength.
+    const auto &pair = pairs[k];
+    return pair.joint.disc_radius(xi,
+                                  pair.area,
+                                  is_bilateral(k, system.broken),
+                                  condensed.scale());
   }
 
 
@@ -242,7 +239,7 @@ namespace mbfem
         if (held[k][e])
           continue;
         const unsigned int row = r0 + e;
-        if (R > 0. && z_norm <= R)
+        if (JointLaw::in_disc(z_norm, R))
           {
             // Stuck: no slip increment.
             F(row) = v[e];
@@ -543,7 +540,8 @@ namespace mbfem
               r_t[e] = system.u(r0 + e);
               z[e]   = r_t[e] - v[e];
             }
-        if ((R > 0. && z.norm() <= R) || v.norm() <= displacement_tolerance)
+        if (JointLaw::in_disc(z.norm(), R) ||
+            v.norm() <= displacement_tolerance)
           {
             trial.state[k] = ContactState::stick;
             continue;

@@ -11,7 +11,9 @@ namespace mbfem
    * A pair of tributary area A sticks while |r_T| < c A + mu max(r_N, 0)
    * and carries tension up to sigma_t A; once it breaks (tension beyond
    * that, or opening) it keeps c = sigma_t = 0. This is the one place that
-   * says so: strength reduction and joint water pressure belong here too.
+   * says so: the fast iteration's checks, the load path's margins, the
+   * Newton method's friction disc and the certificate's strength
+   * reduction all ask it (doc/contact_solver.md).
    */
   struct JointLaw
   {
@@ -39,6 +41,85 @@ namespace mbfem
     tensile_limit(const double area, const bool broken) const
     {
       return (broken ? 0. : tensile_strength) * area;
+    }
+
+    /**
+     * How far a pair at normal force @p r_n is inside the tension cut-off
+     * (> 0 inside), as a force: the load path's margin, and the check's.
+     */
+    double
+    tension_margin(const double r_n, const double area, const bool broken) const
+    {
+      return r_n + tensile_limit(area, broken);
+    }
+
+    /**
+     * How far a tangential force of magnitude @p r_t is inside the friction
+     * cone at normal force @p r_n (> 0 inside), as a force.
+     */
+    double
+    friction_margin(const double r_n,
+                    const double r_t,
+                    const double area,
+                    const bool   broken,
+                    const bool   tensile = false) const
+    {
+      return shear_strength(r_n, area, broken, tensile) - r_t;
+    }
+
+    /**
+     * Table 1's check of a closed pair against the tension cut-off: beyond
+     * it by more than @p tolerance (a force), the pair breaks open.
+     */
+    bool
+    breaks(const double r_n,
+           const double area,
+           const bool   broken,
+           const double tolerance) const
+    {
+      return tension_margin(r_n, area, broken) < -tolerance;
+    }
+
+    /**
+     * Table 1's check of a stuck pair: |r_T| = @p r_t beyond the friction
+     * cone by more than @p tolerance (a force), the pair slips.
+     */
+    bool
+    slips(const double r_n,
+          const double r_t,
+          const double area,
+          const bool   broken,
+          const double tolerance) const
+    {
+      return friction_margin(r_n, r_t, area, broken) < -tolerance;
+    }
+
+    /**
+     * The friction disc of the semismooth Newton method (Alart and
+     * Curnier's form), in its units, where a force is @p scale times
+     * larger: radius c A scale + mu max(xi, 0) at augmented normal force
+     * @p xi, the cohesion only where @p cohesive (a pair held closed
+     * until it breaks; a unilateral pair's disc must vanish as it opens).
+     */
+    double
+    disc_radius(const double xi,
+                const double area,
+                const bool   cohesive,
+                const double scale) const
+    {
+      return scale * (cohesive ? shear_strength(0., area, false) : 0.) +
+             friction_coefficient * std::max(xi, 0.);
+    }
+
+    /**
+     * The semismooth projection's case: z = r_T - v (the tangential force
+     * less the slip increment) inside the disc of @p radius means the pair
+     * sticks, outside it slips along z.
+     */
+    static bool
+    in_disc(const double z_norm, const double radius)
+    {
+      return radius > 0. && z_norm <= radius;
     }
 
     /**
