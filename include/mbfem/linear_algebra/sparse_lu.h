@@ -4,6 +4,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <utility>
 #include <vector>
 
 namespace mbfem
