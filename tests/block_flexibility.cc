@@ -5,6 +5,8 @@
 // small 3D blocks with floating modes (pinned, so C is that of the pinned
 // block), whose contact DoFs include supported and pinned ones, and enough
 // of them (>= 500) that Block::flexibility() takes the MUMPS route.
+// The same flexibility on demand (ContactFlexibility: columns and diagonal
+// forms for load patterns) must match it too.
 // Boundary ids of the colorized hyper_cube: 0/1 at x = 0/1, 2/3 at
 // y = 0/1, 4/5 at z = 0/1.
 
@@ -105,6 +107,53 @@ check(const std::string &supports, const unsigned int degree)
     std::printf("  largest entry %.3e, largest difference %.3e\n",
                 largest,
                 difference);
+
+  // On demand (ContactFlexibility): columns C s and forms s^T C s for unit
+  // loads at every 7th contact DoF and for two-DoF patterns, against the
+  // unit-load reference; a load that reaches no free DoF moves nothing.
+  const auto                      on_demand = block.on_demand_flexibility(dofs);
+  std::vector<mbfem::ContactLoad> loads;
+  for (unsigned int j = 0; j < dofs.size(); j += 7)
+    loads.push_back({{j, 1.}});
+  for (unsigned int j = 0; j + 1 < dofs.size(); j += 11)
+    loads.push_back({{j, 0.5}, {j + 1, -2.}});
+  const FullMatrix<double>  columns           = on_demand->columns(loads);
+  const std::vector<double> forms             = on_demand->forms(loads);
+  double                    column_difference = 0., form_difference = 0.;
+  unsigned int              still      = 0;
+  bool                      still_zero = true;
+  for (unsigned int l = 0; l < loads.size(); ++l)
+    {
+      double form = 0.;
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        {
+          double value = 0.;
+          for (const auto &[j, w] : loads[l])
+            value += reference(i, j) * w;
+          column_difference =
+            std::max(column_difference, std::abs(columns(i, l) - value));
+          for (const auto &[j, w] : loads[l])
+            if (j == i)
+              form += w * value;
+        }
+      form_difference = std::max(form_difference, std::abs(forms[l] - form));
+      if (!on_demand->moves(loads[l]))
+        {
+          ++still;
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            still_zero = still_zero && columns(i, l) == 0.;
+          still_zero = still_zero && forms[l] == 0.;
+        }
+    }
+  std::printf("  on demand, %zu load patterns: columns and forms against unit "
+              "loads %s 1e-10; %u move nothing, with zero columns and forms: "
+              "%s\n",
+              loads.size(),
+              std::max(column_difference, form_difference) <= 1e-10 * largest ?
+                "below" :
+                "ABOVE",
+              still,
+              still_zero ? "yes" : "NO");
 }
 
 int

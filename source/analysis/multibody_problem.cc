@@ -255,6 +255,7 @@ namespace mbfem
                                              parameters.linear_solver.package,
                                              contact_parameters.state_system);
       solver->set_state_methods(contact_parameters.state_method);
+      solver->set_flexibility_columns(contact_parameters.flexibility_columns);
       return solver;
     };
     if (contact_parameters.runs_condensed())
@@ -677,6 +678,16 @@ namespace mbfem
       pcout << "condensed " << std::setprecision(3) << condensed_seconds
             << " (factorisation, flexibility, load response, contact "
                "iterations, recovery)";
+    std::size_t computed = 0, all = 0;
+    for (const auto &configuration : configurations)
+      if (configuration.solver != nullptr)
+        {
+          computed += configuration.solver->columns_on_demand().first;
+          all += configuration.solver->columns_on_demand().second;
+        }
+    if (all > 0)
+      pcout << ", flexibility on demand: " << computed << " of " << all
+            << " columns computed";
     if (contact_parameters.runs_condensed() &&
         contact_parameters.runs_monolithic())
       pcout << "; ";

@@ -759,6 +759,28 @@ namespace mbfem
 
 
   template <int dim>
+  bool
+  Block<dim>::has_fixed_stiffness() const
+  {
+    return !plastic.uses_newton();
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<ContactFlexibility>
+  Block<dim>::on_demand_flexibility(
+    const std::vector<types::global_dof_index> &dofs) const
+  {
+    return std::make_unique<ContactFlexibility>(stiffness,
+                                                homogeneous_constraints,
+                                                dofs,
+                                                !plastic.uses_newton());
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   Block<dim>::external_load_resultant() const
   {

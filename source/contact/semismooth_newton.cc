@@ -604,6 +604,8 @@ namespace mbfem
     std::vector<int> entry_of(n_r + coupling.n_modes(), -1);
     std::vector<int> every_column(n_r);
     std::iota(every_column.begin(), every_column.end(), 0);
+    condensed.request_columns(
+      std::vector<unsigned int>(every_column.begin(), every_column.end()));
     for (unsigned int i = 0; i < n_r; ++i)
       {
         auto &row = rows[i];

@@ -131,6 +131,22 @@ namespace mbfem
         "and at most a tenth of its entries can be non-zero, else dense. "
         "(The semismooth Newton method factorises its Jacobian sparse "
         "always.)");
+      prm.declare_entry(
+        "Flexibility columns",
+        "auto",
+        Patterns::Selection("auto|whole|on demand"),
+        "How the condensed formulation computes each block's flexibility "
+        "(its displacements at the contact DoFs under unit loads there). "
+        "whole: every column at the start. on demand: the block's "
+        "factorisation is kept and a pair's columns are computed when it "
+        "first closes, so that time and memory grow with the pairs that "
+        "carry force, not with all; a stuck pair with no gap and no force "
+        "yet, between blocks that cannot move rigidly, then starts the "
+        "iteration open, and a trial closes only the open pairs penetrating "
+        "at least 0.9 times as deep as the deepest. A block with a plastic "
+        "tangent is "
+        "always whole. auto: on demand for blocks with at least 500 "
+        "contact DoFs, else whole.");
     }
 
     /** Contact/Exact traction: 2D tractions to measure the pairs' against. */
@@ -282,10 +298,15 @@ namespace mbfem
                      choice == "both"       ? Formulation::both :
                                               Formulation::condensed);
       state_method.parse_parameters(prm);
-      const std::string system = prm.get("State system");
-      state_system             = (system == "dense"  ? StateSystem::dense :
-                                  system == "sparse" ? StateSystem::sparse :
-                                                       StateSystem::automatic);
+      const std::string system  = prm.get("State system");
+      state_system              = (system == "dense"  ? StateSystem::dense :
+                                   system == "sparse" ? StateSystem::sparse :
+                                                        StateSystem::automatic);
+      const std::string columns = prm.get("Flexibility columns");
+      flexibility_columns =
+        (columns == "whole"     ? FlexibilityColumns::whole :
+         columns == "on demand" ? FlexibilityColumns::on_demand :
+                                  FlexibilityColumns::automatic);
       prm.enter_subsection("Exact traction");
       {
         compute_traction_errors = prm.get_bool("Compute errors");

@@ -225,6 +225,43 @@ namespace mbfem
 
 
 
+  std::vector<std::vector<double>>
+  MumpsSolver::inverse_entries(
+    const std::vector<std::vector<unsigned int>> &rows_of_column) const
+  {
+    Assert(data->initialised, ExcMessage("factorize() first."));
+    DMUMPS_STRUC_C &id = data->id;
+    AssertDimension(rows_of_column.size(), static_cast<std::size_t>(id.n));
+    std::vector<std::vector<double>> result(rows_of_column.size());
+    std::vector<MUMPS_INT>           pointers(id.n + 1, 1), indices;
+    for (MUMPS_INT j = 0; j < id.n; ++j)
+      {
+        for (const unsigned int i : rows_of_column[j])
+          indices.push_back(i + 1);
+        pointers[j + 1] = indices.size() + 1;
+      }
+    if (indices.empty())
+      return result;
+    std::vector<double> values(indices.size());
+
+    icntl(id, 20)  = 0;
+    icntl(id, 30)  = 1;
+    id.nz_rhs      = indices.size();
+    id.nrhs        = id.n;
+    id.irhs_ptr    = pointers.data();
+    id.irhs_sparse = indices.data();
+    id.rhs_sparse  = values.data();
+    run(3, "entries of the inverse");
+    icntl(id, 30) = 0;
+
+    for (MUMPS_INT j = 0; j < id.n; ++j)
+      result[j].assign(values.begin() + pointers[j] - 1,
+                       values.begin() + pointers[j + 1] - 1);
+    return result;
+  }
+
+
+
   std::size_t
   MumpsSolver::size() const
   {

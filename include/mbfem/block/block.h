@@ -2,6 +2,7 @@
 #define mbfem_block_block_h
 
 #include <mbfem/block/boundary_conditions.h>
+#include <mbfem/block/flexibility.h>
 #include <mbfem/block/floating_modes.h>
 #include <mbfem/linear_algebra/direct_solver.h>
 #include <mbfem/material/in_situ_stress.h>
@@ -205,6 +206,22 @@ namespace mbfem
      */
     FullMatrix<double>
     flexibility(const std::vector<types::global_dof_index> &dofs) const;
+
+    /**
+     * Whether the stiffness stays that of one factorisation (no plastic
+     * tangent that changes): then a flexibility may be computed on demand
+     * (on_demand_flexibility()), its columns long after the set-up.
+     */
+    bool
+    has_fixed_stiffness() const;
+
+    /**
+     * The flexibility over @p dofs with its factorisation kept, for columns
+     * on demand (ContactFlexibility).
+     */
+    std::unique_ptr<ContactFlexibility>
+    on_demand_flexibility(
+      const std::vector<types::global_dof_index> &dofs) const;
 
     /**
      * Virtual work of the external load of the last assemble_load() in each

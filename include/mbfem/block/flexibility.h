@@ -5,11 +5,16 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <map>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace mbfem
 {
   using namespace dealii;
+
+  class MumpsSolver;
 
   /**
    * A block's contact flexibility C = (K^{-1}) restricted to the contact
@@ -36,6 +41,61 @@ namespace mbfem
                       const AffineConstraints<double>            &constraints,
                       const std::vector<types::global_dof_index> &dofs,
                       const bool positive_definite = true);
+
+  /** A load pattern over a block's contact DoFs: (index into dofs, weight). */
+  using ContactLoad = std::vector<std::pair<unsigned int, double>>;
+
+  /**
+   * A block's contact flexibility (as contact_flexibility()) on demand:
+   * the MUMPS factorisation is kept, and only the columns asked for are
+   * computed, as selected entries of K^{-1} (ICNTL(30)), so that a block
+   * with thousands of contact DoFs of which a few carry force costs
+   * (contact DoFs x loaded DoFs), not (contact DoFs)^2. CondensedSystem
+   * asks for the columns of the pairs that close.
+   */
+  class ContactFlexibility
+  {
+  public:
+    /** Factorises @p stiffness; arguments as contact_flexibility(). */
+    ContactFlexibility(const TrilinosWrappers::SparseMatrix       &stiffness,
+                       const AffineConstraints<double>            &constraints,
+                       const std::vector<types::global_dof_index> &dofs,
+                       const bool positive_definite = true);
+
+    ~ContactFlexibility();
+
+    /** The contact DoFs, as given. */
+    unsigned int
+    size() const;
+
+    /**
+     * Whether load pattern @p load reaches a free DoF (where the
+     * constraints send it): otherwise it moves nothing and s^T C s = 0.
+     */
+    bool
+    moves(const ContactLoad &load) const;
+
+    /** s^T C s for each load pattern s of @p loads (a few entries each). */
+    std::vector<double>
+    forms(const std::vector<ContactLoad> &loads) const;
+
+    /**
+     * C s for each load pattern s of @p loads: the displacements at the
+     * contact DoFs (size() x loads.size()).
+     */
+    FullMatrix<double>
+    columns(const std::vector<ContactLoad> &loads) const;
+
+  private:
+    /** A load pattern on the masters: (index into master_dofs, weight). */
+    std::map<unsigned int, double>
+    on_masters(const ContactLoad &load) const;
+
+    /** Each contact DoF as a combination of unconstrained DoFs (masters). */
+    std::vector<unsigned int>                                 master_dofs;
+    std::vector<std::vector<std::pair<unsigned int, double>>> weights;
+    std::unique_ptr<MumpsSolver>                              solver;
+  };
 } // namespace mbfem
 
 #endif

@@ -85,6 +85,37 @@ namespace mbfem
       const std::vector<int>                                      &column_of,
       const std::function<void(const unsigned int, const double)> &add) const;
 
+    /**
+     * Computes, on blocks whose flexibility is on demand, the columns
+     * H_b(., t f) for every k * dim + f of @p rows (side t of pair k on b)
+     * not computed yet: one batch of solves per block. entry(), add_row()
+     * and add_entries() read only computed columns (add_row() computes a
+     * missing one alone, slowly): call this first with the columns they
+     * will read.
+     */
+    void
+    request_columns(const std::vector<unsigned int> &rows) const;
+
+    /**
+     * Whole or on demand (Contact/Flexibility columns; auto: on demand
+     * from 500 contact DoFs, where Block::flexibility() would take the
+     * MUMPS route); before setup().
+     */
+    void
+    set_flexibility_columns(
+      const ContactParameters::FlexibilityColumns columns);
+
+    /** Whether every side of pair @p k is on a block on demand. */
+    bool
+    on_demand(const unsigned int k) const;
+
+    /**
+     * Columns of C_hat computed on demand so far, and how many the
+     * blocks on demand have in all (0 and 0 where every H_b is whole).
+     */
+    std::pair<std::size_t, std::size_t>
+    columns_on_demand() const;
+
     /** Adds every entry of C_hat to @p matrix, (row, column) -> value. */
     void
     add_entries(
@@ -108,7 +139,28 @@ namespace mbfem
     {
       /** The pair of each side on this block (a side per row group). */
       std::vector<unsigned int> pairs;
-      FullMatrix<double>        matrix;
+      /** H_b whole, or empty where it is computed on demand. */
+      FullMatrix<double> matrix;
+
+      /**
+       * On demand (Contact/Flexibility columns): the block's
+       * flexibility, the rows of S over its DoFs, H_b's diagonal (sampled:
+       * sampled_diagonal()), and the columns of
+       * H_b computed so far (empty where not yet): only those of pairs
+       * that carry force, so that memory grows with (sides x closed
+       * sides), not (sides)^2.
+       */
+      std::unique_ptr<ContactFlexibility>      on_demand;
+      std::vector<ContactLoad>                 rows;
+      std::vector<double>                      diagonal;
+      mutable std::vector<std::vector<double>> columns;
+
+      /** H_b(r, c); on demand, column c must have been computed. */
+      double
+      operator()(const unsigned int r, const unsigned int c) const
+      {
+        return on_demand ? columns[c][r] : matrix(r, c);
+      }
     };
 
     /**
@@ -136,13 +188,35 @@ namespace mbfem
     /** A row of a sparse system: (column, value). */
     using SparseRow = std::vector<std::pair<unsigned int, double>>;
 
-    /** C_hat(k * dim + i, l * dim + j), from the blocks' H_b. */
+    /**
+     * C_hat(k * dim + i, l * dim + j), from the blocks' H_b (columns on
+     * demand computed first: request_columns()).
+     */
     double
     entry(const unsigned int row, const unsigned int column) const;
 
+    /** C_hat(i, i), from the whole H_b or the diagonal kept on demand. */
+    double
+    diagonal_entry(const unsigned int row) const;
+
+    /** H_b's columns @p columns of an on-demand block, computed and kept. */
+    void
+    compute_columns(const BlockFlexibility          &flexibility,
+                    const std::vector<unsigned int> &columns) const;
+
     /** setup(), per block: the pair sides on @p block (number @p b), H_b. */
     void
-    add_block(Block<dim> &block, const unsigned int b);
+    add_block(const Block<dim> &block, const unsigned int b);
+
+    /**
+     * H_b's diagonal on demand, for scale() and the held directions:
+     * s^T C s for 64 of the sides' @p rows that move (evenly spaced),
+     * their mean for the other rows that move, zero for those that do
+     * not (their load reaches no free DoF).
+     */
+    static std::vector<double>
+    sampled_diagonal(const ContactFlexibility       &flexibility,
+                     const std::vector<ContactLoad> &rows);
 
     /** setup(), last: scale() and the held directions. */
     void
@@ -181,10 +255,12 @@ namespace mbfem
     void
     estimate_condition(Factorisation &system, const double norm) const;
 
-    const std::vector<ContactPair<dim>> &pairs;
-    const RigidCoupling<dim>            &coupling;
-    const unsigned int                   n_pairs;
-    const ContactParameters::StateSystem state_system;
+    const std::vector<ContactPair<dim>>  &pairs;
+    const RigidCoupling<dim>             &coupling;
+    const unsigned int                    n_pairs;
+    const ContactParameters::StateSystem  state_system;
+    ContactParameters::FlexibilityColumns flexibility_columns =
+      ContactParameters::FlexibilityColumns::automatic;
 
     std::vector<BlockFlexibility> block_flexibility;
     /** For each pair, its sides: (index into block_flexibility, side). */

@@ -179,6 +179,14 @@ namespace mbfem
      * continuation. A trial of strength reduction needs only that verdict;
      * a plain run keeps the chain, whose failures its message reports.
      */
+    /**
+     * Whole or on demand (Contact/Flexibility columns); before setup(), no
+     * effect on the monolithic formulation.
+     */
+    void
+    set_flexibility_columns(
+      const ContactParameters::FlexibilityColumns columns);
+
     void
     set_early_verdict(const bool on);
 
@@ -320,6 +328,13 @@ namespace mbfem
                       const bool         with_flexibility = true) const;
 
     /** Which method concluded the last solve_increment(). */
+    /**
+     * Flexibility columns computed on demand so far, and how many the
+     * blocks on demand have (CondensedSystem::columns_on_demand()).
+     */
+    std::pair<std::size_t, std::size_t>
+    columns_on_demand() const;
+
     StateMethod
     last_method() const;
 
@@ -413,6 +428,24 @@ namespace mbfem
                double               &direction_change) const;
 
     /** ... an open pair closes... */
+    /**
+     * Where the flexibility is on demand (CondensedSystem::on_demand()),
+     * reopens in @p next the pairs that close from @p trial with less
+     * than half the deepest penetration (@p violation).
+     */
+    void
+    limit_closing(const Trial               &trial,
+                  const std::vector<double> &violation,
+                  Trial                     &next) const;
+
+    /**
+     * @p trial with its fresh stuck pairs (no gap, no force, immobile
+     * blocks) open where the flexibility is on demand: the fast
+     * iteration's start.
+     */
+    Trial
+    open_on_demand(const Trial &trial) const;
+
     void
     check_open(const unsigned int    k,
                const Vector<double> &displacement,

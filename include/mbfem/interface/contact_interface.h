@@ -87,6 +87,18 @@ namespace mbfem
     };
     StateSystem state_system = StateSystem::automatic;
 
+    /**
+     * Whether a block's flexibility is computed whole at the start or
+     * column by column as pairs close (see the entry).
+     */
+    enum class FlexibilityColumns : unsigned char
+    {
+      automatic,
+      whole,
+      on_demand
+    };
+    FlexibilityColumns flexibility_columns = FlexibilityColumns::automatic;
+
     /** The methods of the state iteration and their limits. */
     StateMethodParameters state_method;
 

@@ -61,6 +61,16 @@ namespace mbfem
     inverse_entries(const std::vector<unsigned int> &rows,
                     const std::vector<unsigned int> &columns) const;
 
+    /**
+     * The entries (A^{-1})_{ij} for i in @p rows_of_column[j], every column
+     * j < size() (none where empty): a sparse pattern, such as the small
+     * diagonal blocks of a flexibility, far cheaper than whole columns. The
+     * rows of a column must be distinct; the values come in their order.
+     */
+    std::vector<std::vector<double>>
+    inverse_entries(
+      const std::vector<std::vector<unsigned int>> &rows_of_column) const;
+
     std::size_t
     size() const;
 
