@@ -145,25 +145,29 @@ namespace mbfem
   {
     // The whole diagonal costs as much as a quarter of the flexibility
     // (2.4 of 11 s on the 1377-pair stacked beams): for scale() and the
-    // held directions, a sample and its mean do.
-    std::vector<unsigned int> moving;
-    for (unsigned int r = 0; r < rows.size(); ++r)
-      if (flexibility.moves(rows[r]))
-        moving.push_back(r);
+    // held directions, a sample per pair direction (normal, tangential:
+    // their flexibilities differ) and its mean do.
     std::vector<double> diagonal(rows.size(), 0.);
-    if (moving.empty())
-      return diagonal;
-    const unsigned int n_sample = std::min<std::size_t>(64, moving.size());
-    std::vector<ContactLoad> sample;
-    for (unsigned int i = 0; i < n_sample; ++i)
-      sample.push_back(rows[moving[i * moving.size() / n_sample]]);
-    const std::vector<double> values = flexibility.forms(sample);
-    const double              mean =
-      std::accumulate(values.begin(), values.end(), 0.) / n_sample;
-    for (const unsigned int r : moving)
-      diagonal[r] = mean;
-    for (unsigned int i = 0; i < n_sample; ++i)
-      diagonal[moving[i * moving.size() / n_sample]] = values[i];
+    for (unsigned int direction = 0; direction < dim; ++direction)
+      {
+        std::vector<unsigned int> moving;
+        for (unsigned int r = direction; r < rows.size(); r += dim)
+          if (flexibility.moves(rows[r]))
+            moving.push_back(r);
+        if (moving.empty())
+          continue;
+        const std::size_t        n = std::min<std::size_t>(32, moving.size());
+        std::vector<ContactLoad> sample;
+        for (std::size_t i = 0; i < n; ++i)
+          sample.push_back(rows[moving[i * moving.size() / n]]);
+        const std::vector<double> values = flexibility.forms(sample);
+        const double              mean =
+          std::accumulate(values.begin(), values.end(), 0.) / n;
+        for (const unsigned int r : moving)
+          diagonal[r] = mean;
+        for (std::size_t i = 0; i < n; ++i)
+          diagonal[moving[i * moving.size() / n]] = values[i];
+      }
     return diagonal;
   }
 

@@ -345,11 +345,15 @@ namespace mbfem
     // as deep as the deepest, those that would touch first if the load
     // grew from the trial's (the load path's first event, approximately),
     // so that the pairs that these push apart never need theirs.
+    // Only between immobile blocks: where a block can move rigidly, a
+    // trial that closes some of its pairs and opens others may need all
+    // its closings to hold it.
     if (condensed == nullptr)
       return;
     const auto closing = [&](const unsigned int k) {
       return trial.state[k] == ContactState::open &&
-             next.state[k] != ContactState::open && condensed->on_demand(k);
+             next.state[k] != ContactState::open && condensed->on_demand(k) &&
+             immobile(k);
     };
     double deepest = 0.;
     for (unsigned int k = 0; k < n_pairs; ++k)
@@ -358,6 +362,19 @@ namespace mbfem
     for (unsigned int k = 0; k < n_pairs; ++k)
       if (closing(k) && violation[k] < internal::closing_fraction * deepest)
         next.state[k] = ContactState::open;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::immobile(const unsigned int k) const
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+        if (coupling(k * dim + d, a) != 0.)
+          return false;
+    return true;
   }
 
 
@@ -376,8 +393,11 @@ namespace mbfem
     Trial start = trial;
     for (unsigned int k = 0; k < n_pairs; ++k)
       {
+        // A joint with cohesion or tensile strength stays stuck: opened,
+        // it would lose its strength without breaking.
         if (trial.state[k] != ContactState::stick || trial.broken[k] ||
             contact_pairs[k].tied || contact_pairs[k].initial_gap != 0. ||
+            contact_pairs[k].joint.has_strength() || !immobile(k) ||
             !condensed->on_demand(k) ||
             std::all_of(held[k].begin(), held[k].end(), [](bool h) {
               return h;
@@ -385,12 +405,8 @@ namespace mbfem
           continue;
         bool fresh = true;
         for (unsigned int d = 0; d < dim; ++d)
-          {
-            fresh = fresh && (committed_solution.size() == 0 ||
-                              committed_solution(k * dim + d) == 0.);
-            for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-              fresh = fresh && coupling(k * dim + d, a) == 0.;
-          }
+          fresh = fresh && (committed_solution.size() == 0 ||
+                            committed_solution(k * dim + d) == 0.);
         if (fresh)
           start.state[k] = ContactState::open;
       }

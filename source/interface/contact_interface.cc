@@ -140,11 +140,11 @@ namespace mbfem
         "whole: every column at the start. on demand: the block's "
         "factorisation is kept and a pair's columns are computed when it "
         "first closes, so that time and memory grow with the pairs that "
-        "carry force, not with all; a stuck pair with no gap and no force "
-        "yet, between blocks that cannot move rigidly, then starts the "
-        "iteration open, and a trial closes only the open pairs penetrating "
-        "at least 0.9 times as deep as the deepest. A block with a plastic "
-        "tangent is "
+        "carry force, not with all; a stuck pair with no gap, no force yet "
+        "and no strength, between blocks that cannot move rigidly, then "
+        "starts the iteration open, and there a trial closes only the open "
+        "pairs penetrating at least 0.9 times as deep as the deepest. A "
+        "block with a plastic tangent is "
         "always whole. auto: on demand for blocks with at least 500 "
         "contact DoFs, else whole.");
     }

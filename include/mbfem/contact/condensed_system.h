@@ -210,9 +210,10 @@ namespace mbfem
 
     /**
      * H_b's diagonal on demand, for scale() and the held directions:
-     * s^T C s for 64 of the sides' @p rows that move (evenly spaced),
-     * their mean for the other rows that move, zero for those that do
-     * not (their load reaches no free DoF).
+     * s^T C s for 32 of the sides' @p rows of each pair direction that
+     * move (evenly spaced), their mean for that direction's other rows
+     * that move, zero for those that do not (their load reaches no free
+     * DoF).
      */
     static std::vector<double>
     sampled_diagonal(const ContactFlexibility       &flexibility,

@@ -179,6 +179,9 @@ namespace mbfem
      * continuation. A trial of strength reduction needs only that verdict;
      * a plain run keeps the chain, whose failures its message reports.
      */
+    void
+    set_early_verdict(const bool on);
+
     /**
      * Whole or on demand (Contact/Flexibility columns); before setup(), no
      * effect on the monolithic formulation.
@@ -186,9 +189,6 @@ namespace mbfem
     void
     set_flexibility_columns(
       const ContactParameters::FlexibilityColumns columns);
-
-    void
-    set_early_verdict(const bool on);
 
     /** Accepts the converged increment as the start of the next one. */
     void
@@ -327,7 +327,6 @@ namespace mbfem
                       const bool         solved           = true,
                       const bool         with_flexibility = true) const;
 
-    /** Which method concluded the last solve_increment(). */
     /**
      * Flexibility columns computed on demand so far, and how many the
      * blocks on demand have (CondensedSystem::columns_on_demand()).
@@ -335,6 +334,7 @@ namespace mbfem
     std::pair<std::size_t, std::size_t>
     columns_on_demand() const;
 
+    /** Which method concluded the last solve_increment(). */
     StateMethod
     last_method() const;
 
@@ -428,10 +428,18 @@ namespace mbfem
                double               &direction_change) const;
 
     /** ... an open pair closes... */
+    void
+    check_open(const unsigned int    k,
+               const Vector<double> &displacement,
+               const CheckScales    &scales,
+               Trial                &next,
+               double               &violation) const;
+
     /**
      * Where the flexibility is on demand (CondensedSystem::on_demand()),
-     * reopens in @p next the pairs that close from @p trial with less
-     * than half the deepest penetration (@p violation).
+     * reopens in @p next the pairs between immobile blocks that close from
+     * @p trial with less than internal::closing_fraction (0.9) of the
+     * deepest penetration (@p violation).
      */
     void
     limit_closing(const Trial               &trial,
@@ -439,19 +447,16 @@ namespace mbfem
                   Trial                     &next) const;
 
     /**
-     * @p trial with its fresh stuck pairs (no gap, no force, immobile
-     * blocks) open where the flexibility is on demand: the fast
+     * @p trial with its fresh stuck pairs (no gap, no force, no strength,
+     * immobile blocks) open where the flexibility is on demand: the fast
      * iteration's start.
      */
     Trial
     open_on_demand(const Trial &trial) const;
 
-    void
-    check_open(const unsigned int    k,
-               const Vector<double> &displacement,
-               const CheckScales    &scales,
-               Trial                &next,
-               double               &violation) const;
+    /** Whether no floating mode moves pair @p k (P_hat's rows are zero). */
+    bool
+    immobile(const unsigned int k) const;
 
     /** ... and a pair in tension beyond its limit opens (and breaks). */
     void
