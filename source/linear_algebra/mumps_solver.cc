@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <type_traits>
 
 namespace mbfem
 {
@@ -162,6 +163,27 @@ namespace mbfem
 
 
 
+  void
+  MumpsSolver::selected_entries(std::vector<int>    &pointers,
+                                std::vector<int>    &indices,
+                                std::vector<double> &values) const
+  {
+    static_assert(std::is_same_v<MUMPS_INT, int>,
+                  "MUMPS with 32-bit integers (the header uses int)");
+    DMUMPS_STRUC_C &id = data->id;
+    icntl(id, 20)      = 0;
+    icntl(id, 30)      = 1;
+    id.nz_rhs          = indices.size();
+    id.nrhs            = id.n;
+    id.irhs_ptr        = pointers.data();
+    id.irhs_sparse     = indices.data();
+    id.rhs_sparse      = values.data();
+    run(3, "entries of the inverse");
+    icntl(id, 30) = 0;
+  }
+
+
+
   FullMatrix<double>
   MumpsSolver::inverse_entries(const std::vector<unsigned int> &rows,
                                const std::vector<unsigned int> &columns) const
@@ -199,15 +221,7 @@ namespace mbfem
     for (MUMPS_INT &p : pointers)
       ++p;
 
-    icntl(id, 20)  = 0;
-    icntl(id, 30)  = 1;
-    id.nz_rhs      = pointers.back() - 1;
-    id.nrhs        = id.n;
-    id.irhs_ptr    = pointers.data();
-    id.irhs_sparse = indices.data();
-    id.rhs_sparse  = values.data();
-    run(3, "entries of the inverse");
-    icntl(id, 30) = 0;
+    selected_entries(pointers, indices, values);
 
     for (std::size_t c = 0, k = 0; c < n; ++c)
       {
@@ -244,15 +258,7 @@ namespace mbfem
       return result;
     std::vector<double> values(indices.size());
 
-    icntl(id, 20)  = 0;
-    icntl(id, 30)  = 1;
-    id.nz_rhs      = indices.size();
-    id.nrhs        = id.n;
-    id.irhs_ptr    = pointers.data();
-    id.irhs_sparse = indices.data();
-    id.rhs_sparse  = values.data();
-    run(3, "entries of the inverse");
-    icntl(id, 30) = 0;
+    selected_entries(pointers, indices, values);
 
     for (MUMPS_INT j = 0; j < id.n; ++j)
       result[j].assign(values.begin() + pointers[j] - 1,

@@ -85,6 +85,16 @@ namespace mbfem
     void
     run(const int job, const char *what) const;
 
+    /**
+     * ICNTL(30): the entries of A^{-1} whose (1-based) rows @p indices
+     * lists per column between @p pointers (compressed columns over all
+     * columns), into @p values in the same order.
+     */
+    void
+    selected_entries(std::vector<int>    &pointers,
+                     std::vector<int>    &indices,
+                     std::vector<double> &values) const;
+
     std::unique_ptr<Data> data;
   };
 } // namespace mbfem
