@@ -3,14 +3,10 @@
 #include <mbfem/contact/lemke_method.h>
 #include <mbfem/contact/semismooth_newton.h>
 
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/lapack_full_matrix.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <iomanip>
-#include <set>
 #include <sstream>
 
 namespace mbfem
@@ -28,21 +24,6 @@ namespace mbfem
           return "open";
       }
   }
-
-
-
-  namespace internal
-  {
-    /**
-     * Where the flexibility is on demand, the open pairs a trial closes:
-     * those penetrating at least this fraction of the deepest
-     * (ContactSolver::limit_closing()). On the 1377-pair stacked beams,
-     * 0.5 closed 476 pairs in the first trial and computed 7752 of the
-     * 8262 columns over 19 trials; 0.9 closes 102 and needs 612 columns
-     * and 5 trials.
-     */
-    constexpr double closing_fraction = 0.9;
-  } // namespace internal
 
 
 
@@ -98,6 +79,8 @@ namespace mbfem
     initial              = committed;
     for (const auto &pair : contact_pairs)
       nominal_joints.push_back(pair.joint);
+    state_check = std::make_unique<const StateCheck<dim>>(
+      contact_pairs, held, committed_displacement, loads, coupling, condensed);
   }
 
 
@@ -281,428 +264,9 @@ namespace mbfem
     progress.step(to_string(method), count_states(trial));
     // Monolithic: a block the states cannot hold makes the whole system
     // singular; say so before a sparse LU returns noise.
-    if (monolithic && !unheld_blocks(trial).empty())
+    if (monolithic && !mechanisms.unheld_blocks(trial).empty())
       return false;
     return system->solve(equations, loads, solution, displacement);
-  }
-
-
-
-  template <int dim>
-  typename ContactSolver<dim>::Trial
-  ContactSolver<dim>::check(const Trial          &trial,
-                            const Vector<double> &solution,
-                            const Vector<double> &displacement,
-                            std::vector<double>  &violation,
-                            double               &direction_change) const
-  {
-    const CheckScales scales = check_scales(solution, displacement);
-    Trial             next   = trial;
-    violation.assign(n_pairs, 0.);
-    direction_change = 0.;
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      {
-        if (std::all_of(held[k].begin(), held[k].end(), [](bool h) {
-              return h;
-            }))
-          continue;
-        if (contact_pairs[k].tied)
-          continue; // stays stuck
-        switch (trial.state[k])
-          {
-            case ContactState::stick:
-              check_stick(k, trial, solution, scales, next, violation[k]);
-              break;
-            case ContactState::slip:
-              check_slip(k,
-                         trial,
-                         solution,
-                         displacement,
-                         scales,
-                         next,
-                         violation[k],
-                         direction_change);
-              break;
-            case ContactState::open:
-              check_open(k, displacement, scales, next, violation[k]);
-              break;
-          }
-      }
-    limit_closing(trial, violation, next);
-    return next;
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::limit_closing(const Trial               &trial,
-                                    const std::vector<double> &violation,
-                                    Trial                     &next) const
-  {
-    // Where the flexibility is on demand, a closing pair costs columns of
-    // its blocks' flexibility: close only the pairs that penetrate nearly
-    // as deep as the deepest, those that would touch first if the load
-    // grew from the trial's (the load path's first event, approximately),
-    // so that the pairs that these push apart never need theirs.
-    // Only between immobile blocks: where a block can move rigidly, a
-    // trial that closes some of its pairs and opens others may need all
-    // its closings to hold it.
-    if (condensed == nullptr)
-      return;
-    const auto closing = [&](const unsigned int k) {
-      return trial.state[k] == ContactState::open &&
-             next.state[k] != ContactState::open && condensed->on_demand(k) &&
-             immobile(k);
-    };
-    double deepest = 0.;
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      if (closing(k))
-        deepest = std::max(deepest, violation[k]);
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      if (closing(k) && violation[k] < internal::closing_fraction * deepest)
-        next.state[k] = ContactState::open;
-  }
-
-
-
-  template <int dim>
-  bool
-  ContactSolver<dim>::immobile(const unsigned int k) const
-  {
-    for (unsigned int d = 0; d < dim; ++d)
-      for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-        if (coupling(k * dim + d, a) != 0.)
-          return false;
-    return true;
-  }
-
-
-
-  template <int dim>
-  typename ContactSolver<dim>::Trial
-  ContactSolver<dim>::open_on_demand(const Trial &trial) const
-  {
-    // A pair that starts stuck (no gap) without force yet, between blocks
-    // that cannot move rigidly, and whose blocks' flexibility is on
-    // demand starts the iteration open: the closing rule closes it if the
-    // load presses it, and only then are its columns computed. (With a
-    // floating block, all pairs open may leave it unheld: not there.)
-    if (condensed == nullptr)
-      return trial;
-    Trial start = trial;
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      {
-        // A joint with cohesion or tensile strength stays stuck: opened,
-        // it would lose its strength without breaking.
-        if (trial.state[k] != ContactState::stick || trial.broken[k] ||
-            contact_pairs[k].tied || contact_pairs[k].initial_gap != 0. ||
-            contact_pairs[k].joint.has_strength() || !immobile(k) ||
-            !condensed->on_demand(k) ||
-            std::all_of(held[k].begin(), held[k].end(), [](bool h) {
-              return h;
-            }))
-          continue;
-        bool fresh = true;
-        for (unsigned int d = 0; d < dim; ++d)
-          fresh = fresh && (committed_solution.size() == 0 ||
-                            committed_solution(k * dim + d) == 0.);
-        if (fresh)
-          start.state[k] = ContactState::open;
-      }
-    return start;
-  }
-
-
-
-  template <int dim>
-  typename ContactSolver<dim>::CheckScales
-  ContactSolver<dim>::check_scales(const Vector<double> &solution,
-                                   const Vector<double> &displacement) const
-  {
-    const unsigned int n_r = n_pairs * dim;
-
-    // Scales of the tolerances: what both formulations know (not Delta_F,
-    // which only the condensed one computes), so that they decide alike.
-    double force_scale = 1e-300, displacement_scale = 1e-300;
-    for (unsigned int i = 0; i < n_r; ++i)
-      {
-        force_scale = std::max(force_scale, std::abs(solution(i)));
-        displacement_scale =
-          std::max(displacement_scale, std::abs(displacement(i)));
-      }
-    for (const double f : loads.resultant)
-      force_scale = std::max(force_scale, std::abs(f));
-    for (const auto &pair : contact_pairs)
-      displacement_scale = std::max(displacement_scale, pair.initial_gap);
-    CheckScales scales;
-    scales.force                  = force_scale;
-    scales.displacement           = displacement_scale;
-    scales.force_tolerance        = state_tolerance * force_scale;
-    scales.displacement_tolerance = state_tolerance * displacement_scale;
-    return scales;
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::break_open(const unsigned int k,
-                                 const Trial       &trial,
-                                 const double       r_n,
-                                 const double       tension_limit,
-                                 const CheckScales &scales,
-                                 Trial             &next,
-                                 double            &violation) const
-  {
-    const auto &pair = contact_pairs[k];
-    next.state[k]    = ContactState::open;
-    if (!trial.broken[k] && pair.joint.has_strength())
-      next.broken[k] = true;
-    next.tensile_slip[k] = false;
-    violation            = (-tension_limit - r_n) / scales.force;
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::check_stick(const unsigned int    k,
-                                  const Trial          &trial,
-                                  const Vector<double> &solution,
-                                  const CheckScales    &scales,
-                                  Trial                &next,
-                                  double               &violation) const
-  {
-    const auto  &pair = contact_pairs[k];
-    const double tension_limit =
-      pair.joint.tensile_limit(pair.area, trial.broken[k]);
-    const double   r_n = solution(k * dim);
-    Tensor<1, dim> r_t;
-    for (unsigned int d = 1; d < dim; ++d)
-      r_t[d] = solution(k * dim + d);
-    const double r_t_norm = r_t.norm();
-    if (pair.joint.breaks(
-          r_n, pair.area, trial.broken[k], scales.force_tolerance))
-      break_open(k, trial, r_n, tension_limit, scales, next, violation);
-    else if (pair.joint.slips(r_n,
-                              r_t_norm,
-                              pair.area,
-                              trial.broken[k],
-                              scales.force_tolerance))
-      {
-        next.state[k]               = ContactState::slip;
-        next.slip_direction[k]      = -r_t / r_t_norm;
-        next.direction_stiffness[k] = 0.;
-        next.tensile_slip[k]        = r_n < 0.;
-        violation                   = -pair.joint.friction_margin(r_n,
-                                                r_t_norm,
-                                                pair.area,
-                                                trial.broken[k]) /
-                    scales.force;
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::check_slip(const unsigned int    k,
-                                 const Trial          &trial,
-                                 const Vector<double> &solution,
-                                 const Vector<double> &displacement,
-                                 const CheckScales    &scales,
-                                 Trial                &next,
-                                 double               &violation,
-                                 double               &direction_change) const
-  {
-    const auto  &pair = contact_pairs[k];
-    const double tension_limit =
-      pair.joint.tensile_limit(pair.area, trial.broken[k]);
-    const double   r_n = solution(k * dim);
-    Tensor<1, dim> d_t, increment_t;
-    for (unsigned int d = 1; d < dim; ++d)
-      {
-        d_t[d]         = displacement(k * dim + d);
-        increment_t[d] = d_t[d] - committed_displacement[k][d];
-      }
-    const double along = increment_t * trial.slip_direction[k];
-    // A slip increment against the assumed direction (2D: a reversed sign;
-    // 3D: more than 90 degrees off) or none at all means the pair sticks.
-    const bool sticks =
-      along < -scales.displacement_tolerance ||
-      (dim == 3 && increment_t.norm() < scales.displacement_tolerance);
-    if (pair.joint.breaks(
-          r_n, pair.area, trial.broken[k], scales.force_tolerance))
-      break_open(k, trial, r_n, tension_limit, scales, next, violation);
-    else if (sticks)
-      {
-        next.state[k] = ContactState::stick;
-        violation     = std::abs(along) / scales.displacement;
-      }
-    else
-      {
-        if (dim == 3)
-          {
-            // Next Newton step about this slip increment.
-            const Tensor<1, dim> s = increment_t / increment_t.norm();
-            direction_change =
-              std::max(direction_change, (s - trial.slip_direction[k]).norm());
-            next.slip_direction[k] = s;
-            next.direction_stiffness[k] =
-              pair.joint.shear_strength(r_n,
-                                        pair.area,
-                                        trial.broken[k],
-                                        trial.tensile_slip[k]) /
-              increment_t.norm();
-          }
-        const bool tensile = r_n < -scales.force_tolerance;
-        if (tensile != trial.tensile_slip[k])
-          {
-            next.tensile_slip[k] = tensile;
-            violation            = std::abs(r_n) / scales.force;
-          }
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::check_open(const unsigned int    k,
-                                 const Vector<double> &displacement,
-                                 const CheckScales    &scales,
-                                 Trial                &next,
-                                 double               &violation) const
-  {
-    const double gap = contact_pairs[k].initial_gap + displacement(k * dim);
-    if (gap < -scales.displacement_tolerance)
-      {
-        next.state[k] = ContactState::stick;
-        violation     = -gap / scales.displacement;
-      }
-  }
-
-
-
-  template <int dim>
-  std::string
-  ContactSolver<dim>::signature(const Trial &trial) const
-  {
-    std::string s(n_pairs, ' ');
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      {
-        // In 2D the slip sign is part of the state; in 3D the direction is
-        // a continuous unknown, iterated separately.
-        char c = (trial.state[k] == ContactState::stick ? 'k' :
-                  trial.state[k] == ContactState::open  ? 'o' :
-                  dim == 3                              ? 's' :
-                  trial.slip_direction[k][1] > 0        ? '+' :
-                                                          '-');
-        if (trial.broken[k])
-          c = static_cast<char>(std::toupper(c));
-        if (trial.tensile_slip[k])
-          c = 't';
-        s[k] = c;
-      }
-    return s;
-  }
-
-
-
-  template <int dim>
-  std::string
-  ContactSolver<dim>::diagnose_singular(const Trial &trial) const
-  {
-    const std::string message = unheld_blocks(trial);
-    if (!message.empty())
-      return message;
-    return "\n    The interface system is singular, and no floating "
-           "block is to blame: check for pairs whose nodes are both "
-           "fixed in some direction.";
-  }
-
-
-
-  template <int dim>
-  std::string
-  ContactSolver<dim>::unheld_blocks(const Trial &trial) const
-  {
-    std::ostringstream message;
-    for (unsigned int b = 0; b < coupling.n_blocks(); ++b)
-      {
-        const unsigned int q = coupling.n_modes(b);
-        if (q == 0)
-          continue;
-        // The directions in which the block's pairs can push, given their
-        // states; the block is held iff they span its q free modes.
-        std::vector<std::vector<double>> columns;
-        unsigned int                     counts[3] = {0, 0, 0};
-        for (unsigned int k = 0; k < n_pairs; ++k)
-          {
-            bool touches = false;
-            for (unsigned int a = 0; a < q; ++a)
-              for (unsigned int d = 0; d < dim; ++d)
-                if (std::abs(coupling(k * dim + d, coupling.offset(b) + a)) >
-                    0.)
-                  touches = true;
-            if (!touches)
-              continue;
-            ++counts[static_cast<int>(trial.state[k])];
-            if (trial.state[k] == ContactState::open)
-              continue;
-            const double mu = trial.tensile_slip[k] ?
-                                0. :
-                                contact_pairs[k].joint.friction_coefficient;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                if (held[k][d] ||
-                    (trial.state[k] == ContactState::slip && d > 0))
-                  continue;
-                std::vector<double> column(q);
-                for (unsigned int a = 0; a < q; ++a)
-                  {
-                    column[a] = coupling(k * dim + d, coupling.offset(b) + a);
-                    if (trial.state[k] == ContactState::slip)
-                      for (unsigned int e = 1; e < dim; ++e)
-                        column[a] -=
-                          mu * trial.slip_direction[k][e] *
-                          coupling(k * dim + e, coupling.offset(b) + a);
-                  }
-                columns.push_back(column);
-              }
-          }
-        LAPACKFullMatrix<double> gram(q, q);
-        for (const auto &column : columns)
-          for (unsigned int a = 0; a < q; ++a)
-            for (unsigned int c = 0; c < q; ++c)
-              gram(a, c) += column[a] * column[c];
-        double largest = 1.;
-        for (unsigned int a = 0; a < q; ++a)
-          largest = std::max(largest, gram(a, a));
-        Vector<double>     eigenvalues;
-        FullMatrix<double> eigenvectors;
-        gram.compute_eigenvalues_symmetric(
-          -1., 1e-10 * largest, 1e-14, eigenvalues, eigenvectors);
-        if (eigenvalues.size() == 0)
-          continue;
-        message << "\n    " << coupling.block_name(b)
-                << " cannot be in equilibrium: its contact pairs (" << counts[0]
-                << " stick, " << counts[1] << " slip, " << counts[2]
-                << " open) cannot hold its rigid-body motion";
-        for (unsigned int v = 0; v < eigenvalues.size(); ++v)
-          {
-            Vector<double> combination(coupling.modes(b)[0].size());
-            for (unsigned int a = 0; a < q; ++a)
-              combination.add(eigenvectors(a, v), coupling.modes(b)[a]);
-            combination /= combination.linfty_norm();
-            message << " [" << Block<dim>::describe_rigid_body_mode(combination)
-                    << "]";
-          }
-        message << ": the loads exceed what friction and cohesion can carry, "
-                   "or the block has lost contact.";
-      }
-    return message.str();
   }
 
 
@@ -821,18 +385,22 @@ namespace mbfem
         // direction can make the system regular with an unbounded slip
         // instead.
         const auto fast =
-          fast_iteration(from_last_solve ? current : open_on_demand(committed),
+          fast_iteration(from_last_solve ?
+                           current :
+                           state_check->open_on_demand(committed,
+                                                       committed_solution),
                          increment);
         outcome.iterations = fast.iterations;
         outcome.converged =
-          fast.converged && (monolithic || mechanism(current).empty());
+          fast.converged &&
+          (monolithic || mechanisms.describe(current).empty());
         outcome.no_equilibrium = fast.no_equilibrium;
         outcome.failure        = fast.failure;
         if (fast.converged && !outcome.converged)
           outcome.failure = head +
                             ": the fast iteration's states leave a "
                             "mechanism:" +
-                            mechanism(current);
+                            mechanisms.describe(current);
         return outcome;
       }
     if (m == StateMethod::load_path)
@@ -997,7 +565,7 @@ namespace mbfem
                              unsigned int      &iterations,
                              std::string       &failure)
   {
-    const FastOutcome polish = fast_iteration(states, increment);
+    const auto polish = fast_iteration(states, increment);
     iterations += polish.iterations;
     if (!polish.converged)
       {
@@ -1032,7 +600,7 @@ namespace mbfem
     // admissible; what is refused is the unbounded slip (1e7 m on issue
     // 20's wedge) with which a linearised direction can make such states
     // regular beyond a limit.
-    const std::string moving = mechanism(current);
+    const std::string moving = mechanisms.describe(current);
     if (moving.empty() || (dim == 3 && slip_is_elastic()))
       return "";
     return moving;
@@ -1077,7 +645,7 @@ namespace mbfem
     for (const double s : method_parameters.continuation_factors)
       {
         set_load_fraction(s);
-        const FastOutcome outcome = fast_iteration(trial, increment);
+        const auto outcome = fast_iteration(trial, increment);
         iterations += outcome.iterations;
         solved = outcome.converged;
         if (!solved)
@@ -1091,132 +659,25 @@ namespace mbfem
 
 
   template <int dim>
-  typename ContactSolver<dim>::Trial
-  ContactSolver<dim>::single_change(const Trial               &from,
-                                    const Trial               &to,
-                                    const std::vector<double> &violation)
+  typename FastIteration<dim>::Outcome
+  ContactSolver<dim>::fast_iteration(const Trial       &trial,
+                                     const unsigned int increment)
   {
-    Trial              result = from;
-    const unsigned int worst =
-      std::distance(violation.begin(),
-                    std::max_element(violation.begin(), violation.end()));
-    result.state[worst]        = to.state[worst];
-    result.broken[worst]       = to.broken[worst];
-    result.tensile_slip[worst] = to.tensile_slip[worst];
-    result.slip_direction      = to.slip_direction;
-    result.direction_stiffness = to.direction_stiffness;
-    return result;
-  }
-
-
-
-  template <int dim>
-  std::string
-  ContactSolver<dim>::describe_cycle(const std::string &head,
-                                     const unsigned int iteration,
-                                     const Trial       &trial,
-                                     const Trial       &next) const
-  {
-    std::ostringstream pairs;
-    unsigned int       n_listed = 0;
-    for (unsigned int k = 0; k < n_pairs && n_listed < 10; ++k)
-      if (next.state[k] != trial.state[k])
-        {
-          pairs << "\n      pair " << k << " at (" << contact_pairs[k].a.point
-                << "): " << to_string(trial.state[k]) << " <-> "
-                << to_string(next.state[k]);
-          ++n_listed;
-        }
-    return head + ": the contact states cycle after " +
-           std::to_string(iteration) +
-           " iterations, even switching one pair at a time. Pairs "
-           "that keep switching:" +
-           pairs.str() + "\n    Use more load increments.";
-  }
-
-
-
-  template <int dim>
-  typename ContactSolver<dim>::FastOutcome
-  ContactSolver<dim>::fast_iteration(Trial trial, const unsigned int increment)
-  {
-    const std::string head = "Load increment " + std::to_string(increment);
-
-    FastOutcome           outcome;
-    bool                  damped = false;
-    std::set<std::string> seen{signature(trial)};
-    Trial                 last_good, last_good_next;
-    std::vector<double>   last_good_violation;
-    bool                  have_good = false;
-
-    for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
+    const FastIteration<dim> iteration(*state_check,
+                                       mechanisms,
+                                       contact_pairs,
+                                       max_iterations);
+    const auto               outcome = iteration.run(
+      trial,
+      [this](const Trial &t, Vector<double> &x, Vector<double> &d) {
+        return solve_trial(t, x, d);
+      },
+      "Load increment " + std::to_string(increment));
+    if (outcome.converged)
       {
-        outcome.iterations = iteration;
-        Vector<double> solution, displacement;
-        if (!solve_trial(trial, solution, displacement))
-          {
-            if (!damped && have_good)
-              {
-                // Too many switches at once can lose a block's support;
-                // go back and switch one pair at a time.
-                damped = true;
-                seen.clear();
-                trial =
-                  single_change(last_good, last_good_next, last_good_violation);
-                seen.insert(signature(trial));
-                continue;
-              }
-            outcome.no_equilibrium = true;
-            outcome.failure =
-              head + ": no equilibrium." + diagnose_singular(trial);
-            return outcome;
-          }
-
-        std::vector<double> violation;
-        double              direction_change;
-        Trial               next =
-          check(trial, solution, displacement, violation, direction_change);
-
-        if (signature(next) == signature(trial) && direction_change < 1e-6)
-          {
-            // The directions the solve used, for condensed_problem(); the
-            // trial keeps the updated ones (the next increment's guess).
-            const auto solved    = trial.slip_direction;
-            trial.slip_direction = next.slip_direction;
-            accept(trial, solution, displacement);
-            solved_slip_direction = solved;
-            outcome.converged     = true;
-            return outcome;
-          }
-        have_good           = true;
-        last_good           = trial;
-        last_good_next      = next;
-        last_good_violation = violation;
-
-        if (damped && signature(next) != signature(trial))
-          next = single_change(trial, next, violation);
-        if (signature(next) != signature(trial) &&
-            seen.count(signature(next)) == 1)
-          {
-            if (!damped)
-              {
-                damped = true;
-                seen.clear();
-                next = single_change(trial, next, violation);
-              }
-            else
-              {
-                outcome.failure = describe_cycle(head, iteration, trial, next);
-                return outcome;
-              }
-          }
-        seen.insert(signature(next));
-        trial = next;
+        accept(outcome.states, outcome.solution, outcome.displacement);
+        solved_slip_direction = outcome.solved_slip_direction;
       }
-    outcome.failure = head + ": the contact states did not settle in " +
-                      std::to_string(max_iterations) +
-                      " iterations ('Contact/Maximum iterations'). Use more "
-                      "load increments.";
     return outcome;
   }
 
@@ -1235,117 +696,6 @@ namespace mbfem
     for (unsigned int k = 0; k < n_pairs; ++k)
       for (unsigned int i = 0; i < dim; ++i)
         current_displacement[k][i] = displacement(k * dim + i);
-  }
-
-
-
-  template <int dim>
-  Vector<double>
-  ContactSolver<dim>::mechanism_motion(const Trial &trial) const
-  {
-    if (coupling.n_modes() == 0)
-      return Vector<double>();
-    // The rows that fix a rigid motion: normal at a closed pair,
-    // tangential at a stuck one.
-    std::vector<unsigned int> rows;
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      {
-        const bool stuck =
-          trial.state[k] == ContactState::stick || contact_pairs[k].tied;
-        if (trial.state[k] == ContactState::open && !contact_pairs[k].tied)
-          continue;
-        for (unsigned int d = 0; d < dim; ++d)
-          if (!held[k][d] && (d == 0 || stuck))
-            rows.push_back(k * dim + d);
-      }
-    const unsigned int       q = coupling.n_modes();
-    LAPACKFullMatrix<double> gram(q, q);
-    // A row of P_hat couples the modes of the (at most two) blocks of its
-    // pair only: add the products of its non-zero entries.
-    std::vector<std::pair<unsigned int, double>> entries;
-    for (const unsigned int row : rows)
-      {
-        entries.clear();
-        for (unsigned int a = 0; a < q; ++a)
-          if (coupling(row, a) != 0.)
-            entries.emplace_back(a, coupling(row, a));
-        for (const auto &[a, x] : entries)
-          for (const auto &[c, y] : entries)
-            gram(a, c) += x * y;
-      }
-    double largest = 0.;
-    for (unsigned int a = 0; a < q; ++a)
-      largest = std::max(largest, gram(a, a));
-    Vector<double>     eigenvalues;
-    FullMatrix<double> null_space;
-    gram.compute_eigenvalues_symmetric(
-      -1., 1e-10 * std::max(largest, 1e-300), 1e-14, eigenvalues, null_space);
-    if (eigenvalues.size() == 0)
-      return Vector<double>();
-
-    // Of the free motions, the one the loads drive (their work on the
-    // modes, projected on the free space); a free motion they do no work
-    // on is named as it is.
-    Vector<double> motion(q);
-    for (unsigned int v = 0; v < eigenvalues.size(); ++v)
-      {
-        double work = 0.;
-        for (unsigned int a = 0; a < q; ++a)
-          work += loads.resultant[a] * null_space(a, v);
-        for (unsigned int a = 0; a < q; ++a)
-          motion(a) += work * null_space(a, v);
-      }
-    if (motion.l2_norm() < 1e-8 * std::max(1e-300, [&] {
-                             double f = 0.;
-                             for (const double x : loads.resultant)
-                               f += x * x;
-                             return std::sqrt(f);
-                           }()))
-      for (unsigned int a = 0; a < q; ++a)
-        motion(a) = null_space(a, 0);
-    return motion;
-  }
-
-
-
-  template <int dim>
-  std::string
-  ContactSolver<dim>::mechanism(const Trial &trial) const
-  {
-    const Vector<double> motion = mechanism_motion(trial);
-    if (motion.size() == 0)
-      return "";
-    std::ostringstream message;
-    for (unsigned int b = 0; b < coupling.n_blocks(); ++b)
-      {
-        Vector<double> combination(
-          coupling.n_modes(b) > 0 ? coupling.modes(b)[0].size() : 0);
-        for (unsigned int a = 0; a < coupling.n_modes(b); ++a)
-          combination.add(motion(coupling.offset(b) + a), coupling.modes(b)[a]);
-        if (coupling.n_modes(b) == 0 ||
-            combination.linfty_norm() < 1e-6 * motion.linfty_norm())
-          continue;
-        combination /= combination.linfty_norm();
-        unsigned int counts[3] = {0, 0, 0};
-        for (unsigned int k = 0; k < n_pairs; ++k)
-          {
-            bool touches = false;
-            for (unsigned int a = 0; a < coupling.n_modes(b); ++a)
-              for (unsigned int d = 0; d < dim; ++d)
-                if (coupling(k * dim + d, coupling.offset(b) + a) != 0.)
-                  touches = true;
-            if (touches)
-              ++counts[static_cast<int>(trial.state[k])];
-          }
-        message << "\n    " << coupling.block_name(b)
-                << " cannot be in equilibrium: its contact pairs (" << counts[0]
-                << " stick, " << counts[1] << " slip, " << counts[2]
-                << " open) cannot hold its rigid-body motion ["
-                << Block<dim>::describe_rigid_body_mode(combination)
-                << "]: the loads exceed what friction and cohesion can carry, "
-                   "or the block has lost contact.";
-      }
-    return message.str();
   }
 
 

@@ -262,9 +262,7 @@ namespace mbfem
     Event first;
     for (unsigned int k = 0; k < n_pairs; ++k)
       {
-        if (contact_pairs[k].tied || std::all_of(held[k].begin(),
-                                                 held[k].end(),
-                                                 [](bool h) { return h; }))
+        if (contact_pairs[k].tied || state_check->all_held(k))
           continue;
         // The first sample where the margin fails, then bisection to where
         // it crosses zero.
@@ -425,7 +423,7 @@ namespace mbfem
                                   const Vector<double> &motion,
                                   std::vector<double>  &gap) const
   {
-    // Only a motion the loads drive: without work, mechanism_motion()
+    // Only a motion the loads drive: without work, MechanismTest::motion()
     // names a free motion of either sign.
     double work = 0., load = 0.;
     for (unsigned int a = 0; a < coupling.n_modes(); ++a)
@@ -519,7 +517,7 @@ namespace mbfem
             // on from the same s. Nor is one along which a gap closes: the
             // blocks move until it does.
             set_load_fraction(1.);
-            const Vector<double> free_motion = mechanism_motion(trial);
+            const Vector<double> free_motion = mechanisms.motion(trial);
             if (free_motion.size() > 0)
               {
                 unsigned int n = unload_against(trial, free_motion);
@@ -527,7 +525,8 @@ namespace mbfem
                   n = 1;
                 switches += n;
                 path_switches = switches; // the count, should it throw
-                if (n > 0 && seen_here.insert(signature(trial)).second &&
+                if (n > 0 &&
+                    seen_here.insert(state_check->signature(trial)).second &&
                     switches <= max_switches)
                   continue;
               }
@@ -548,7 +547,7 @@ namespace mbfem
           }
         switch_state(trial, segment, event);
         path_switches = ++switches;
-        AssertThrow(seen_here.insert(signature(trial)).second &&
+        AssertThrow(seen_here.insert(state_check->signature(trial)).second &&
                       switches <= max_switches,
                     Exceptions::ExcIncrementNotConverged(
                       head +
@@ -597,7 +596,7 @@ namespace mbfem
                                           const double       s,
                                           const unsigned int switches) const
   {
-    const std::string motion = mechanism(trial);
+    const std::string motion = mechanisms.describe(trial);
     AssertThrow(motion.empty(),
                 Exceptions::ExcNoEquilibrium(head + ": no equilibrium" +
                                              reached(s, switches) + "." +
@@ -623,13 +622,13 @@ namespace mbfem
     // fast iteration does (in 3D its Newton on the slip directions ends
     // there too).
     set_load_fraction(1.);
-    const FastOutcome polish = fast_iteration(trial, increment);
+    const auto polish = fast_iteration(trial, increment);
     AssertThrow(polish.converged,
                 Exceptions::ExcIncrementNotConverged(
                   head + ": the load path reached the end of the increment" +
                   reached(1., switches) +
                   ", but its states do not settle there: " + polish.failure));
-    const std::string motion = mechanism(current);
+    const std::string motion = mechanisms.describe(current);
     AssertThrow(motion.empty(),
                 Exceptions::ExcNoEquilibrium(head + ": no equilibrium" +
                                              reached(1., switches) + "." +

@@ -5,9 +5,12 @@
 #include <mbfem/contact/condensed_system.h>
 #include <mbfem/contact/contact_problem.h>
 #include <mbfem/contact/contact_state.h>
+#include <mbfem/contact/fast_iteration.h>
 #include <mbfem/contact/interface_system.h>
+#include <mbfem/contact/mechanism_test.h>
 #include <mbfem/contact/monolithic_system.h>
 #include <mbfem/contact/rigid_coupling.h>
+#include <mbfem/contact/state_check.h>
 #include <mbfem/contact/state_method.h>
 #include <mbfem/contact/static_admissibility.h>
 #include <mbfem/interface/contact_interface.h>
@@ -375,112 +378,6 @@ namespace mbfem
                 Vector<double> &solution,
                 Vector<double> &displacement);
 
-    /** Checks every pair; returns the new trial and violations. */
-    Trial
-    check(const Trial          &trial,
-          const Vector<double> &solution,
-          const Vector<double> &displacement,
-          std::vector<double>  &violation,
-          double               &direction_change) const;
-
-    /**
-     * The scales of check()'s tolerances and violations, from what both
-     * formulations know (not Delta_F, which only the condensed one
-     * computes), so that they decide alike.
-     */
-    struct CheckScales
-    {
-      double force                  = 1e-300;
-      double displacement           = 1e-300;
-      double force_tolerance        = 0.;
-      double displacement_tolerance = 0.;
-    };
-
-    CheckScales
-    check_scales(const Vector<double> &solution,
-                 const Vector<double> &displacement) const;
-
-    /**
-     * The steps of check(), for pair @p k of @p trial by its state: the
-     * new state into @p next and its violation into @p violation. A stuck
-     * pair slips or breaks open...
-     */
-    void
-    check_stick(const unsigned int    k,
-                const Trial          &trial,
-                const Vector<double> &solution,
-                const CheckScales    &scales,
-                Trial                &next,
-                double               &violation) const;
-
-    /**
-     * ... a slipping pair sticks, breaks open, changes its direction (3D)
-     * or its tensile slip...
-     */
-    void
-    check_slip(const unsigned int    k,
-               const Trial          &trial,
-               const Vector<double> &solution,
-               const Vector<double> &displacement,
-               const CheckScales    &scales,
-               Trial                &next,
-               double               &violation,
-               double               &direction_change) const;
-
-    /** ... an open pair closes... */
-    void
-    check_open(const unsigned int    k,
-               const Vector<double> &displacement,
-               const CheckScales    &scales,
-               Trial                &next,
-               double               &violation) const;
-
-    /**
-     * Where the flexibility is on demand (CondensedSystem::on_demand()),
-     * reopens in @p next the pairs between immobile blocks that close from
-     * @p trial with less than internal::closing_fraction (0.9) of the
-     * deepest penetration (@p violation).
-     */
-    void
-    limit_closing(const Trial               &trial,
-                  const std::vector<double> &violation,
-                  Trial                     &next) const;
-
-    /**
-     * @p trial with its fresh stuck pairs (no gap, no force, no strength,
-     * immobile blocks) open where the flexibility is on demand: the fast
-     * iteration's start.
-     */
-    Trial
-    open_on_demand(const Trial &trial) const;
-
-    /** Whether no floating mode moves pair @p k (P_hat's rows are zero). */
-    bool
-    immobile(const unsigned int k) const;
-
-    /** ... and a pair in tension beyond its limit opens (and breaks). */
-    void
-    break_open(const unsigned int k,
-               const Trial       &trial,
-               const double       r_n,
-               const double       tension_limit,
-               const CheckScales &scales,
-               Trial             &next,
-               double            &violation) const;
-
-    /**
-     * Which floating blocks the pairs of @p trial cannot hold, and in which
-     * modes; empty if every block is held.
-     */
-    std::string
-    unheld_blocks(const Trial &trial) const;
-
-    /** Message for a singular system: which block is not held. */
-    std::string
-    diagnose_singular(const Trial &trial) const;
-
-    std::string
-    signature(const Trial &trial) const;
 
     /**
      * The certificate's mechanism (per floating mode) as each moving
@@ -494,38 +391,12 @@ namespace mbfem
     describe_mechanism_factor(
       const typename StaticAdmissibility<dim>::Result &result) const;
 
-    /** How the fast iteration ended: converged, or why not. */
-    struct FastOutcome
-    {
-      bool         converged      = false;
-      bool         no_equilibrium = false; // a singular trial, not a cycle
-      unsigned int iterations     = 0;
-      std::string  failure;
-    };
-
     /**
-     * The fixed-point active-set iteration from @p trial: assume states,
-     * solve, check, switch; one switch at a time once it cycles or a
-     * trial is singular. Converged, it stores the solution as current.
+     * The fast iteration (FastIteration) from @p trial on this solver's
+     * interface system; where it converges, its answer is current.
      */
-    FastOutcome
-    fast_iteration(Trial trial, const unsigned int increment);
-
-    /**
-     * @p from with only the pair of the largest @p violation switched to
-     * its state in @p to: the damped step of fast_iteration().
-     */
-    static Trial
-    single_change(const Trial               &from,
-                  const Trial               &to,
-                  const std::vector<double> &violation);
-
-    /** fast_iteration()'s message when the states cycle even damped. */
-    std::string
-    describe_cycle(const std::string &head,
-                   const unsigned int iteration,
-                   const Trial       &trial,
-                   const Trial       &next) const;
+    typename FastIteration<dim>::Outcome
+    fast_iteration(const Trial &trial, const unsigned int increment);
 
     /**
      * Pair @p k's tangential relative displacement in the increment just
@@ -539,21 +410,6 @@ namespace mbfem
     accept(const Trial          &trial,
            const Vector<double> &solution,
            const Vector<double> &displacement);
-
-    /**
-     * The rigid motions of the floating blocks that the states of @p trial
-     * leave free: no normal motion at a closed pair, no tangential motion
-     * at a stuck one (a slipping pair resists only by its strength). Of
-     * these the one the loads drive: the free space's projection of the
-     * loads' work on the modes. Empty if the states hold every block;
-     * otherwise a message naming each moving block and its motion.
-     */
-    std::string
-    mechanism(const Trial &trial) const;
-
-    /** The motion of mechanism() as floating amplitudes; empty if none. */
-    Vector<double>
-    mechanism_motion(const Trial &trial) const;
 
     /**
      * At a mechanism of the load path: the slipping pairs whose slip the
@@ -814,6 +670,11 @@ namespace mbfem
 
     /** The load path: the loads of the increment at s = 1 and at s = 0. */
     IncrementLoads full_loads, start_loads;
+
+    /** The check of Table 1's conditions, on the members above. */
+    std::unique_ptr<const StateCheck<dim>> state_check;
+    /** The mechanism tests of the trials' states. */
+    const MechanismTest<dim> mechanisms{contact_pairs, held, loads, coupling};
 
     /** 'Contact/State method' and the methods' limits. */
     StateMethodParameters method_parameters;

@@ -1,0 +1,102 @@
+#ifndef mbfem_contact_fast_iteration_h
+#define mbfem_contact_fast_iteration_h
+
+#include <mbfem/contact/contact_state.h>
+#include <mbfem/contact/mechanism_test.h>
+#include <mbfem/contact/state_check.h>
+#include <mbfem/interface/contact_interface.h>
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/vector.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mbfem
+{
+  using namespace dealii;
+
+  /**
+   * The fast iteration of the state iteration (doc/state_iteration.md), the
+   * paper's own: assume every pair's state, solve the interface system,
+   * check each pair against its state (StateCheck), switch the pairs that
+   * fail, until none does. Where the states repeat, or a trial leaves a
+   * block unheld after a good one, it goes on switching only the pair that
+   * failed worst. It concludes in a few solves on nearly every increment;
+   * where it cycles, the next method of 'Contact/State method' takes over.
+   *
+   * It knows the interface system only through the solve it is given, so
+   * it runs alike on the condensed and the monolithic formulation, and
+   * from any states (the committed ones, or those another method found).
+   */
+  template <int dim>
+  class FastIteration
+  {
+  public:
+    using Trial = StateTrial<dim>;
+
+    /**
+     * The solve of a trial's states: the forces (rho, then the floating
+     * amplitudes) and the relative displacements in the pairs' frames;
+     * false if the system is singular.
+     */
+    using Solve = std::function<
+      bool(const Trial &, Vector<double> &solution, Vector<double> &d)>;
+
+    /** How the iteration ended, and its answer where it converged. */
+    struct Outcome
+    {
+      bool         converged      = false;
+      bool         no_equilibrium = false; // a singular trial, not a cycle
+      unsigned int iterations     = 0;
+      std::string  failure;
+
+      /** The converged states (slip directions updated by the check). */
+      Trial          states;
+      Vector<double> solution, displacement;
+      /** The slip directions the last solve used. */
+      std::vector<Tensor<1, dim>> solved_slip_direction;
+    };
+
+    /**
+     * At most @p max_iterations solves ('Contact/Maximum iterations');
+     * everything is referenced, not copied.
+     */
+    FastIteration(const StateCheck<dim>               &checks,
+                  const MechanismTest<dim>            &mechanisms,
+                  const std::vector<ContactPair<dim>> &pairs,
+                  const unsigned int                   max_iterations);
+
+    /**
+     * The iteration from @p trial; @p head starts its messages ("Load
+     * increment 3").
+     */
+    Outcome
+    run(Trial trial, const Solve &solve, const std::string &head) const;
+
+  private:
+    /**
+     * @p from with only the pair of the largest @p violation switched to
+     * its state in @p to: the damped step.
+     */
+    static Trial
+    single_change(const Trial               &from,
+                  const Trial               &to,
+                  const std::vector<double> &violation);
+
+    /** The message when the states cycle even damped. */
+    std::string
+    describe_cycle(const std::string &head,
+                   const unsigned int iteration,
+                   const Trial       &trial,
+                   const Trial       &next) const;
+
+    const StateCheck<dim>               &checks;
+    const MechanismTest<dim>            &mechanisms;
+    const std::vector<ContactPair<dim>> &pairs;
+    const unsigned int                   max_iterations;
+  };
+} // namespace mbfem
+
+#endif

@@ -1,0 +1,157 @@
+#include <mbfem/contact/fast_iteration.h>
+
+#include <algorithm>
+#include <iterator>
+#include <set>
+#include <sstream>
+
+namespace mbfem
+{
+  template <int dim>
+  FastIteration<dim>::FastIteration(const StateCheck<dim>    &checks,
+                                    const MechanismTest<dim> &mechanisms,
+                                    const std::vector<ContactPair<dim>> &pairs,
+                                    const unsigned int max_iterations)
+    : checks(checks)
+    , mechanisms(mechanisms)
+    , pairs(pairs)
+    , max_iterations(max_iterations)
+  {}
+
+
+
+  template <int dim>
+  typename FastIteration<dim>::Outcome
+  FastIteration<dim>::run(Trial              trial,
+                          const Solve       &solve,
+                          const std::string &head) const
+  {
+    Outcome               outcome;
+    bool                  damped = false;
+    std::set<std::string> seen{checks.signature(trial)};
+    Trial                 last_good, last_good_next;
+    std::vector<double>   last_good_violation;
+    bool                  have_good = false;
+
+    for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
+      {
+        outcome.iterations = iteration;
+        Vector<double> solution, displacement;
+        if (!solve(trial, solution, displacement))
+          {
+            if (!damped && have_good)
+              {
+                // Too many switches at once can lose a block's support;
+                // go back and switch one pair at a time.
+                damped = true;
+                seen.clear();
+                trial =
+                  single_change(last_good, last_good_next, last_good_violation);
+                seen.insert(checks.signature(trial));
+                continue;
+              }
+            outcome.no_equilibrium = true;
+            outcome.failure =
+              head + ": no equilibrium." + mechanisms.diagnose_singular(trial);
+            return outcome;
+          }
+
+        std::vector<double> violation;
+        double              direction_change;
+        Trial               next = checks.check(
+          trial, solution, displacement, violation, direction_change);
+
+        if (checks.signature(next) == checks.signature(trial) &&
+            direction_change < 1e-6)
+          {
+            // The directions the solve used, for condensed_problem(); the
+            // trial keeps the updated ones (the next increment's guess).
+            const auto solved             = trial.slip_direction;
+            trial.slip_direction          = next.slip_direction;
+            outcome.states                = trial;
+            outcome.solution              = solution;
+            outcome.displacement          = displacement;
+            outcome.solved_slip_direction = solved;
+            outcome.converged             = true;
+            return outcome;
+          }
+        have_good           = true;
+        last_good           = trial;
+        last_good_next      = next;
+        last_good_violation = violation;
+
+        if (damped && checks.signature(next) != checks.signature(trial))
+          next = single_change(trial, next, violation);
+        if (checks.signature(next) != checks.signature(trial) &&
+            seen.count(checks.signature(next)) == 1)
+          {
+            if (!damped)
+              {
+                damped = true;
+                seen.clear();
+                next = single_change(trial, next, violation);
+              }
+            else
+              {
+                outcome.failure = describe_cycle(head, iteration, trial, next);
+                return outcome;
+              }
+          }
+        seen.insert(checks.signature(next));
+        trial = next;
+      }
+    outcome.failure = head + ": the contact states did not settle in " +
+                      std::to_string(max_iterations) +
+                      " iterations ('Contact/Maximum iterations'). Use more "
+                      "load increments.";
+    return outcome;
+  }
+
+
+  template <int dim>
+  typename FastIteration<dim>::Trial
+  FastIteration<dim>::single_change(const Trial               &from,
+                                    const Trial               &to,
+                                    const std::vector<double> &violation)
+  {
+    Trial              result = from;
+    const unsigned int worst =
+      std::distance(violation.begin(),
+                    std::max_element(violation.begin(), violation.end()));
+    result.state[worst]        = to.state[worst];
+    result.broken[worst]       = to.broken[worst];
+    result.tensile_slip[worst] = to.tensile_slip[worst];
+    result.slip_direction      = to.slip_direction;
+    result.direction_stiffness = to.direction_stiffness;
+    return result;
+  }
+
+
+  template <int dim>
+  std::string
+  FastIteration<dim>::describe_cycle(const std::string &head,
+                                     const unsigned int iteration,
+                                     const Trial       &trial,
+                                     const Trial       &next) const
+  {
+    std::ostringstream listed;
+    unsigned int       n_listed = 0;
+    for (unsigned int k = 0; k < pairs.size() && n_listed < 10; ++k)
+      if (next.state[k] != trial.state[k])
+        {
+          listed << "\n      pair " << k << " at (" << pairs[k].a.point
+                 << "): " << to_string(trial.state[k]) << " <-> "
+                 << to_string(next.state[k]);
+          ++n_listed;
+        }
+    return head + ": the contact states cycle after " +
+           std::to_string(iteration) +
+           " iterations, even switching one pair at a time. Pairs "
+           "that keep switching:" +
+           listed.str() + "\n    Use more load increments.";
+  }
+
+
+  template class FastIteration<2>;
+  template class FastIteration<3>;
+} // namespace mbfem
