@@ -448,35 +448,107 @@ namespace mbfem
   typename ContactSolver<dim>::MethodOutcome
   ContactSolver<dim>::run_load_path(const unsigned int increment)
   {
-    // The path did not conclude where it throws: in 3D it can pivot in a
-    // cycle at one load, from zero load every event is at s = 0+, or it
+    // The path does not conclude where in 3D it pivots in a cycle at one
+    // load, where from zero load every event is at s = 0+, or where it
     // stops at a mechanism (below a limit it can take a branch that ends
     // there, doc/state_iteration.md). It may stop part way: the next
     // method starts from the increment's full load.
+    set_path_start();
+    LoadPath<dim> path(contact_pairs,
+                       held,
+                       coupling,
+                       *state_check,
+                       mechanisms,
+                       committed,
+                       committed_displacement,
+                       start_loads,
+                       full_loads,
+                       loads,
+                       [this](const Trial    &t,
+                              Vector<double> &x,
+                              Vector<double> &d) {
+                         return solve_trial(t, x, d);
+                       });
+    const auto    end = path.run("Load increment " + std::to_string(increment));
     MethodOutcome outcome;
-    const auto    text_of = [](const ExceptionBase &e) {
-      std::string text = message_of(e);
-      return text.substr(0, text.find_last_not_of(" \n") + 1);
-    };
-    path_switches = 0;
-    try
-      {
-        outcome.iterations = load_path(increment);
-        outcome.converged  = true;
-      }
-    catch (const Exceptions::ExcIncrementNotConverged &e)
-      {
-        outcome.iterations = path_switches;
-        outcome.failure    = text_of(e);
-      }
-    catch (const Exceptions::ExcNoEquilibrium &e)
-      {
-        outcome.iterations     = path_switches;
-        outcome.no_equilibrium = true;
-        outcome.failure        = text_of(e);
-      }
+    outcome.iterations     = end.switches;
+    outcome.no_equilibrium = end.no_equilibrium;
+    outcome.failure        = end.failure;
+    path_switches          = end.switches;
+    if (end.reached_end)
+      finish_path(end.states, increment, outcome);
     set_load_fraction(1.);
     return outcome;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::finish_path(const Trial       &states,
+                                  const unsigned int increment,
+                                  MethodOutcome     &outcome)
+  {
+    const std::string head = "Load increment " + std::to_string(increment);
+    // At s = 1: the states the path ended with, solved and checked as the
+    // fast iteration does (in 3D its Newton on the slip directions ends
+    // there too).
+    set_load_fraction(1.);
+    const auto        polish  = fast_iteration(states, increment);
+    const std::string reached = LoadPath<dim>::how_far(1., outcome.iterations);
+    if (!polish.converged)
+      {
+        outcome.failure =
+          head +
+          ": the load path reached the end of the "
+          "increment" +
+          reached + ", but its states do not settle there: " + polish.failure;
+        return;
+      }
+    const std::string motion = mechanisms.describe(current);
+    if (!motion.empty())
+      {
+        outcome.no_equilibrium = true;
+        outcome.failure = head + ": no equilibrium" + reached + "." + motion;
+        return;
+      }
+    outcome.iterations += polish.iterations;
+    outcome.converged = true;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::set_path_start()
+  {
+    // The start: the load for which the committed solution is exact with
+    // the present C_hat, P_hat (these change between Newton's passes).
+    const unsigned int n_r  = n_pairs * dim;
+    full_loads.displacement = loads.displacement;
+    full_loads.resultant    = loads.resultant;
+    Vector<double> start(n_r + coupling.n_modes());
+    if (committed_solution.size() == start.size())
+      start = committed_solution;
+    loads.displacement.reinit(n_r);
+    start_loads.displacement = condensed->relative_displacement(start, loads);
+    start_loads.displacement *= -1.;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      for (unsigned int i = 0; i < dim; ++i)
+        start_loads.displacement(k * dim + i) += committed_displacement[k][i];
+    start_loads.resultant.assign(coupling.n_modes(), 0.);
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+      for (unsigned int j = 0; j < n_r; ++j)
+        start_loads.resultant[a] -= coupling(j, a) * start(j);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::set_load_fraction(const double s)
+  {
+    loads.set_fraction(start_loads, full_loads, s);
   }
 
 

@@ -1,5 +1,4 @@
-#include <mbfem/base/exceptions.h>
-#include <mbfem/contact/contact_solver.h>
+#include <mbfem/contact/load_path.h>
 
 #include <algorithm>
 #include <cmath>
@@ -46,18 +45,6 @@ namespace mbfem
     constexpr double tolerance = state_tolerance;
   } // namespace internal
 
-  namespace
-  {
-    /** The part of the load path's messages that says how far it got. */
-    std::string
-    reached(const double s, const unsigned int n)
-    {
-      std::ostringstream text;
-      text << " (the load path held up to s = " << std::setprecision(6) << s
-           << " of this increment, after " << n << " state switches)";
-      return text.str();
-    }
-  } // namespace
 
   using internal::Condition;
   using internal::n_samples;
@@ -66,7 +53,7 @@ namespace mbfem
 
 
   template <int dim>
-  struct ContactSolver<dim>::Segment
+  struct LoadPath<dim>::Segment
   {
     double         s_a = 0.;
     Vector<double> x_a, d_a, x_1, d_1;
@@ -91,7 +78,7 @@ namespace mbfem
 
 
   template <int dim>
-  struct ContactSolver<dim>::Event
+  struct LoadPath<dim>::Event
   {
     unsigned int pair      = numbers::invalid_unsigned_int;
     Condition    condition = Condition::none;
@@ -102,33 +89,126 @@ namespace mbfem
 
 
   template <int dim>
-  void
-  ContactSolver<dim>::set_load_fraction(const double s)
+  LoadPath<dim>::LoadPath(
+    const std::vector<ContactPair<dim>>      &pairs,
+    const std::vector<std::array<bool, dim>> &held,
+    const RigidCoupling<dim>                 &coupling,
+    const StateCheck<dim>                    &checks,
+    const MechanismTest<dim>                 &mechanisms,
+    const Trial                              &committed,
+    const std::vector<Tensor<1, dim>>        &committed_displacement,
+    const IncrementLoads                     &start_loads,
+    const IncrementLoads                     &full_loads,
+    IncrementLoads                           &loads,
+    const typename FastIteration<dim>::Solve &solve)
+    : pairs(pairs)
+    , held(held)
+    , coupling(coupling)
+    , checks(checks)
+    , mechanisms(mechanisms)
+    , committed(committed)
+    , committed_displacement(committed_displacement)
+    , start_loads(start_loads)
+    , full_loads(full_loads)
+    , loads(loads)
+    , solve(solve)
+  {}
+
+
+
+  template <int dim>
+  typename LoadPath<dim>::Outcome
+  LoadPath<dim>::run(const std::string &head)
   {
-    loads.displacement = start_loads.displacement;
-    loads.displacement.sadd(1. - s, s, full_loads.displacement);
-    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-      loads.resultant[a] =
-        (1. - s) * start_loads.resultant[a] + s * full_loads.resultant[a];
+    Trial trial = committed;
+    std::fill(trial.direction_stiffness.begin(),
+              trial.direction_stiffness.end(),
+              0.);
+    double                s        = 0.;
+    unsigned int          switches = 0;
+    std::set<std::string> seen_here; // states met at this s
+    const unsigned int    max_switches = 20 * pairs.size() + 100;
+    Segment               segment;
+    // Every pair's normal gap at the present s (for close_along()).
+    std::vector<double> gap(pairs.size());
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      gap[k] = pairs[k].initial_gap + committed_displacement[k][0];
+    for (;;)
+      {
+        if (!solve_segment(trial, s, segment) ||
+            (dim == 3 && !correct_directions(trial, segment)))
+          {
+            loads.set_fraction(start_loads, full_loads, 1.);
+            const unsigned int n = mend_mechanism(trial, gap);
+            switches += n;
+            if (n > 0 && seen_here.insert(checks.signature(trial)).second &&
+                switches <= max_switches)
+              continue;
+            return singular_end(trial, head, s, switches);
+          }
+        const Event event = first_event(trial, segment);
+        if (event.pair == numbers::invalid_unsigned_int)
+          break;
+        const double s_event = s + event.t * (1. - s);
+        if (s_event > s + 1e-9)
+          seen_here.clear();
+        s = s_event;
+        for (unsigned int k = 0; k < pairs.size(); ++k)
+          {
+            Tensor<1, dim> rho, d;
+            segment.at(k, event.t, rho, d);
+            gap[k] = pairs[k].initial_gap + d[0];
+          }
+        switch_state(trial, segment, event);
+        ++switches;
+        if (!seen_here.insert(checks.signature(trial)).second ||
+            switches > max_switches)
+          {
+            Outcome cycle;
+            cycle.switches = switches;
+            cycle.failure  = head +
+                            ": the load path cannot continue: the states of "
+                            "pair " +
+                            std::to_string(event.pair) +
+                            " and its neighbours cycle at one load" +
+                            how_far(s, switches) + ".";
+            return cycle;
+          }
+      }
+    Outcome end;
+    end.reached_end = true;
+    end.switches    = switches;
+    end.states      = trial;
+    return end;
+  }
+
+
+
+  template <int dim>
+  std::string
+  LoadPath<dim>::how_far(const double s, const unsigned int switches)
+  {
+    std::ostringstream text;
+    text << " (the load path held up to s = " << std::setprecision(6) << s
+         << " of this increment, after " << switches << " state switches)";
+    return text.str();
   }
 
 
 
   template <int dim>
   bool
-  ContactSolver<dim>::solve_segment(Trial       &trial,
-                                    const double s_a,
-                                    Segment     &segment)
+  LoadPath<dim>::solve_segment(Trial &trial, const double s_a, Segment &segment)
   {
     segment.s_a = s_a;
-    set_load_fraction(s_a);
-    if (!solve_trial(trial, segment.x_a, segment.d_a))
+    loads.set_fraction(start_loads, full_loads, s_a);
+    if (!solve(trial, segment.x_a, segment.d_a))
       return false;
-    set_load_fraction(1.);
-    if (!solve_trial(trial, segment.x_1, segment.d_1))
+    loads.set_fraction(start_loads, full_loads, 1.);
+    if (!solve(trial, segment.x_1, segment.d_1))
       return false;
 
-    const unsigned int n_r = n_pairs * dim;
+    const unsigned int n_r = pairs.size() * dim;
     segment.force_scale = segment.displacement_scale = 1e-300;
     for (unsigned int i = 0; i < n_r; ++i)
       {
@@ -141,7 +221,7 @@ namespace mbfem
       }
     for (const double f : full_loads.resultant)
       segment.force_scale = std::max(segment.force_scale, std::abs(f));
-    for (const auto &pair : contact_pairs)
+    for (const auto &pair : pairs)
       segment.displacement_scale =
         std::max(segment.displacement_scale, pair.initial_gap);
     return true;
@@ -151,7 +231,7 @@ namespace mbfem
 
   template <int dim>
   bool
-  ContactSolver<dim>::correct_directions(Trial &trial, Segment &segment)
+  LoadPath<dim>::correct_directions(Trial &trial, Segment &segment)
   {
     // 3D: the slip direction is an unknown of the slip state. Newton on it
     // at the segment's start, as the fast iteration does (pair_equations):
@@ -160,7 +240,7 @@ namespace mbfem
     for (unsigned int iteration = 0; iteration < 25; ++iteration)
       {
         double change = 0.;
-        for (unsigned int k = 0; k < n_pairs; ++k)
+        for (unsigned int k = 0; k < pairs.size(); ++k)
           {
             if (trial.state[k] != ContactState::slip)
               continue;
@@ -174,10 +254,10 @@ namespace mbfem
             change = std::max(change, (s - trial.slip_direction[k]).norm());
             trial.slip_direction[k] = s;
             trial.direction_stiffness[k] =
-              contact_pairs[k].joint.shear_strength(rho[0],
-                                                    contact_pairs[k].area,
-                                                    trial.broken[k],
-                                                    trial.tensile_slip[k]) /
+              pairs[k].joint.shear_strength(rho[0],
+                                            pairs[k].area,
+                                            trial.broken[k],
+                                            trial.tensile_slip[k]) /
               v.norm();
           }
         if (change < 1e-6)
@@ -191,7 +271,7 @@ namespace mbfem
 
 
   template <int dim>
-  struct ContactSolver<dim>::Margin
+  struct LoadPath<dim>::Margin
   {
     double    value     = std::numeric_limits<double>::max();
     Condition condition = Condition::none;
@@ -200,14 +280,14 @@ namespace mbfem
 
 
   template <int dim>
-  typename ContactSolver<dim>::Margin
-  ContactSolver<dim>::state_margin(const Trial       &trial,
-                                   const Segment     &segment,
-                                   const unsigned int k,
-                                   const double       t) const
+  typename LoadPath<dim>::Margin
+  LoadPath<dim>::state_margin(const Trial       &trial,
+                              const Segment     &segment,
+                              const unsigned int k,
+                              const double       t) const
   {
     const double   F = segment.force_scale, D = segment.displacement_scale;
-    const auto    &pair = contact_pairs[k];
+    const auto    &pair = pairs[k];
     Tensor<1, dim> rho, d;
     segment.at(k, t, rho, d);
     Margin     worst;
@@ -251,18 +331,17 @@ namespace mbfem
 
 
   template <int dim>
-  typename ContactSolver<dim>::Event
-  ContactSolver<dim>::first_event(const Trial   &trial,
-                                  const Segment &segment) const
+  typename LoadPath<dim>::Event
+  LoadPath<dim>::first_event(const Trial &trial, const Segment &segment) const
   {
     const auto margin = [&](const unsigned int k, const double t) {
       return state_margin(trial, segment, k, t);
     };
 
     Event first;
-    for (unsigned int k = 0; k < n_pairs; ++k)
+    for (unsigned int k = 0; k < pairs.size(); ++k)
       {
-        if (contact_pairs[k].tied || state_check->all_held(k))
+        if (pairs[k].tied || checks.all_held(k))
           continue;
         // The first sample where the margin fails, then bisection to where
         // it crosses zero.
@@ -316,12 +395,12 @@ namespace mbfem
 
   template <int dim>
   void
-  ContactSolver<dim>::switch_state(Trial         &trial,
-                                   const Segment &segment,
-                                   const Event   &event) const
+  LoadPath<dim>::switch_state(Trial         &trial,
+                              const Segment &segment,
+                              const Event   &event) const
   {
     const unsigned int k    = event.pair;
-    const auto        &pair = contact_pairs[k];
+    const auto        &pair = pairs[k];
     Tensor<1, dim>     rho, d, rho_failed, d_failed;
     segment.at(k, event.t, rho, d);
     segment.at(k, event.t_failed, rho_failed, d_failed);
@@ -386,14 +465,32 @@ namespace mbfem
 
   template <int dim>
   unsigned int
-  ContactSolver<dim>::unload_against(Trial                &trial,
-                                     const Vector<double> &motion) const
+  LoadPath<dim>::mend_mechanism(Trial &trial, std::vector<double> &gap) const
+  {
+    // A mechanism whose motion would reverse the slip of some pairs is not
+    // the limit: those pairs stick, and the path goes on from the same s.
+    // Nor is one along which a gap closes: the blocks move until it does.
+    const Vector<double> free_motion = mechanisms.motion(trial);
+    if (free_motion.size() == 0)
+      return 0;
+    const unsigned int n = unload_against(trial, free_motion);
+    if (n == 0 && close_along(trial, free_motion, gap))
+      return 1;
+    return n;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  LoadPath<dim>::unload_against(Trial                &trial,
+                                const Vector<double> &motion) const
   {
     // The tangential relative motion of each slipping pair under the
     // mechanism's motion, against its slip direction.
-    std::vector<double> along(n_pairs, 0.);
+    std::vector<double> along(pairs.size(), 0.);
     double              largest = 0.;
-    for (unsigned int k = 0; k < n_pairs; ++k)
+    for (unsigned int k = 0; k < pairs.size(); ++k)
       {
         if (trial.state[k] != ContactState::slip)
           continue;
@@ -406,7 +503,7 @@ namespace mbfem
         largest  = std::max(largest, w.norm());
       }
     unsigned int n_switched = 0;
-    for (unsigned int k = 0; k < n_pairs; ++k)
+    for (unsigned int k = 0; k < pairs.size(); ++k)
       if (along[k] < -1e-6 * largest)
         {
           trial.state[k] = ContactState::stick;
@@ -419,9 +516,9 @@ namespace mbfem
 
   template <int dim>
   bool
-  ContactSolver<dim>::close_along(Trial                &trial,
-                                  const Vector<double> &motion,
-                                  std::vector<double>  &gap) const
+  LoadPath<dim>::close_along(Trial                &trial,
+                             const Vector<double> &motion,
+                             std::vector<double>  &gap) const
   {
     // Only a motion the loads drive: without work, MechanismTest::motion()
     // names a free motion of either sign.
@@ -439,8 +536,8 @@ namespace mbfem
     double                      amplitude = std::numeric_limits<double>::max();
     Tensor<1, dim>              first_motion;
     double                      largest = 0.;
-    std::vector<Tensor<1, dim>> w(n_pairs);
-    for (unsigned int k = 0; k < n_pairs; ++k)
+    std::vector<Tensor<1, dim>> w(pairs.size());
+    for (unsigned int k = 0; k < pairs.size(); ++k)
       {
         for (unsigned int e = 0; e < dim; ++e)
           if (!held[k][e])
@@ -448,12 +545,12 @@ namespace mbfem
               w[k][e] += coupling(k * dim + e, a) * motion(a);
         largest = std::max(largest, w[k].norm());
       }
-    for (unsigned int k = 0; k < n_pairs; ++k)
+    for (unsigned int k = 0; k < pairs.size(); ++k)
       {
         // Only pairs the motion closes head-on enough that the blocks move
         // at most 100 times the gap: a grazing closure would be a large
         // rigid motion, beyond the small displacements of the method.
-        if (trial.state[k] != ContactState::open || contact_pairs[k].tied ||
+        if (trial.state[k] != ContactState::open || pairs[k].tied ||
             held[k][0] || !(w[k][0] < -1e-2 * largest))
           continue;
         const double closes = std::max(gap[k], 0.) / -w[k][0];
@@ -467,7 +564,7 @@ namespace mbfem
     if (first == numbers::invalid_unsigned_int)
       return false;
     // The gaps once the blocks have moved so far.
-    for (unsigned int k = 0; k < n_pairs; ++k)
+    for (unsigned int k = 0; k < pairs.size(); ++k)
       gap[k] += amplitude * w[k][0];
     Tensor<1, dim> slip;
     for (unsigned int e = 1; e < dim; ++e)
@@ -487,174 +584,29 @@ namespace mbfem
 
 
   template <int dim>
-  unsigned int
-  ContactSolver<dim>::load_path(const unsigned int increment)
+  typename LoadPath<dim>::Outcome
+  LoadPath<dim>::singular_end(const Trial       &trial,
+                              const std::string &head,
+                              const double       s,
+                              const unsigned int switches) const
   {
-    set_path_start();
-
-    const std::string head = "Load increment " + std::to_string(increment);
-
-    Trial trial = committed;
-    std::fill(trial.direction_stiffness.begin(),
-              trial.direction_stiffness.end(),
-              0.);
-    double                s        = 0.;
-    unsigned int          switches = 0;
-    std::set<std::string> seen_here; // states met at this s
-    const unsigned int    max_switches = 20 * n_pairs + 100;
-    Segment               segment;
-    // Every pair's normal gap at the present s (for close_along()).
-    std::vector<double> gap(n_pairs);
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      gap[k] = contact_pairs[k].initial_gap + committed_displacement[k][0];
-    for (;;)
-      {
-        if (!solve_segment(trial, s, segment) ||
-            (dim == 3 && !correct_directions(trial, segment)))
-          {
-            // A mechanism whose motion would reverse the slip of some
-            // pairs is not the limit: those pairs stick, and the path goes
-            // on from the same s. Nor is one along which a gap closes: the
-            // blocks move until it does.
-            set_load_fraction(1.);
-            const Vector<double> free_motion = mechanisms.motion(trial);
-            if (free_motion.size() > 0)
-              {
-                unsigned int n = unload_against(trial, free_motion);
-                if (n == 0 && close_along(trial, free_motion, gap))
-                  n = 1;
-                switches += n;
-                path_switches = switches; // the count, should it throw
-                if (n > 0 &&
-                    seen_here.insert(state_check->signature(trial)).second &&
-                    switches <= max_switches)
-                  continue;
-              }
-            throw_singular_path(trial, head, s, switches);
-          }
-        const Event event = first_event(trial, segment);
-        if (event.pair == numbers::invalid_unsigned_int)
-          break;
-        const double s_event = s + event.t * (1. - s);
-        if (s_event > s + 1e-9)
-          seen_here.clear();
-        s = s_event;
-        for (unsigned int k = 0; k < n_pairs; ++k)
-          {
-            Tensor<1, dim> rho, d;
-            segment.at(k, event.t, rho, d);
-            gap[k] = contact_pairs[k].initial_gap + d[0];
-          }
-        switch_state(trial, segment, event);
-        path_switches = ++switches;
-        AssertThrow(seen_here.insert(state_check->signature(trial)).second &&
-                      switches <= max_switches,
-                    Exceptions::ExcIncrementNotConverged(
-                      head +
-                      ": the load path cannot continue: the states of "
-                      "pair " +
-                      std::to_string(event.pair) +
-                      " and its neighbours cycle at one load" +
-                      reached(s, switches) + "."));
-      }
-
-    return switches + finish_path(trial, increment, switches);
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::set_path_start()
-  {
-    // The start: the load for which the committed solution is exact with
-    // the present C_hat, P_hat (these change between Newton's passes).
-    const unsigned int n_r  = n_pairs * dim;
-    full_loads.displacement = loads.displacement;
-    full_loads.resultant    = loads.resultant;
-    Vector<double> start(n_r + coupling.n_modes());
-    if (committed_solution.size() == start.size())
-      start = committed_solution;
-    loads.displacement.reinit(n_r);
-    start_loads.displacement = condensed->relative_displacement(start, loads);
-    start_loads.displacement *= -1.;
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      for (unsigned int i = 0; i < dim; ++i)
-        start_loads.displacement(k * dim + i) += committed_displacement[k][i];
-    start_loads.resultant.assign(coupling.n_modes(), 0.);
-    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-      for (unsigned int j = 0; j < n_r; ++j)
-        start_loads.resultant[a] -= coupling(j, a) * start(j);
-  }
-
-
-
-  template <int dim>
-  void
-  ContactSolver<dim>::throw_singular_path(const Trial       &trial,
-                                          const std::string &head,
-                                          const double       s,
-                                          const unsigned int switches) const
-  {
+    Outcome           end;
     const std::string motion = mechanisms.describe(trial);
-    AssertThrow(motion.empty(),
-                Exceptions::ExcNoEquilibrium(head + ": no equilibrium" +
-                                             reached(s, switches) + "." +
-                                             motion));
-    AssertThrow(false,
-                Exceptions::ExcIncrementNotConverged(
-                  head + ": the interface system is singular" +
-                  reached(s, switches) +
-                  ", and no rigid motion is free: check for pairs "
-                  "whose nodes are both fixed in some direction."));
+    end.switches             = switches;
+    end.no_equilibrium       = !motion.empty();
+    if (end.no_equilibrium)
+      end.failure =
+        head + ": no equilibrium" + how_far(s, switches) + "." + motion;
+    else
+      end.failure = head + ": the interface system is singular" +
+                    how_far(s, switches) +
+                    ", and no rigid motion is free: check for pairs "
+                    "whose nodes are both fixed in some direction.";
+    return end;
   }
 
 
 
-  template <int dim>
-  unsigned int
-  ContactSolver<dim>::finish_path(const Trial       &trial,
-                                  const unsigned int increment,
-                                  const unsigned int switches)
-  {
-    const std::string head = "Load increment " + std::to_string(increment);
-    // At s = 1: the states the path ended with, solved and checked as the
-    // fast iteration does (in 3D its Newton on the slip directions ends
-    // there too).
-    set_load_fraction(1.);
-    const auto polish = fast_iteration(trial, increment);
-    AssertThrow(polish.converged,
-                Exceptions::ExcIncrementNotConverged(
-                  head + ": the load path reached the end of the increment" +
-                  reached(1., switches) +
-                  ", but its states do not settle there: " + polish.failure));
-    const std::string motion = mechanisms.describe(current);
-    AssertThrow(motion.empty(),
-                Exceptions::ExcNoEquilibrium(head + ": no equilibrium" +
-                                             reached(1., switches) + "." +
-                                             motion));
-    return polish.iterations;
-  }
-
-
-
-  // The members defined in this file (the class itself is instantiated in
-  // contact_solver.cc).
-#define MBFEM_INSTANTIATE(dim)                                                 \
-  template void ContactSolver<dim>::set_load_fraction(double);                 \
-  template bool ContactSolver<dim>::solve_segment(Trial &, double, Segment &); \
-  template bool ContactSolver<dim>::correct_directions(Trial &, Segment &);    \
-  template void ContactSolver<dim>::switch_state(Trial &,                      \
-                                                 const Segment &,              \
-                                                 const Event &) const;         \
-  template unsigned int ContactSolver<dim>::load_path(unsigned int);           \
-  template unsigned int ContactSolver<dim>::unload_against(                    \
-    Trial &, const Vector<double> &) const;
-  MBFEM_INSTANTIATE(2)
-  MBFEM_INSTANTIATE(3)
-#undef MBFEM_INSTANTIATE
-  template ContactSolver<2>::Event
-  ContactSolver<2>::first_event(const Trial &, const Segment &) const;
-  template ContactSolver<3>::Event
-  ContactSolver<3>::first_event(const Trial &, const Segment &) const;
+  template class LoadPath<2>;
+  template class LoadPath<3>;
 } // namespace mbfem

@@ -7,6 +7,7 @@
 #include <mbfem/contact/contact_state.h>
 #include <mbfem/contact/fast_iteration.h>
 #include <mbfem/contact/interface_system.h>
+#include <mbfem/contact/load_path.h>
 #include <mbfem/contact/mechanism_test.h>
 #include <mbfem/contact/monolithic_system.h>
 #include <mbfem/contact/rigid_coupling.h>
@@ -412,43 +413,6 @@ namespace mbfem
            const Vector<double> &displacement);
 
     /**
-     * At a mechanism of the load path: the slipping pairs whose slip the
-     * mechanism's motion would reverse stick instead (they are not at
-     * their limit along it). Returns how many switched; 0 means the
-     * mechanism is the limit.
-     */
-    unsigned int
-    unload_against(Trial &trial, const Vector<double> &motion) const;
-
-    /**
-     * At a mechanism of the load path that unloading cannot mend: the
-     * blocks move along it, a finite motion at the same load, until the
-     * first open pair closes (a column tipping onto its neighbour across a
-     * gap), which then slips on in the direction it moved (or sticks, if
-     * it did not move tangentially). Only along a motion the loads do work
-     * on, and only for a pair it closes at a move of at most 100 times the
-     * gap. @p gap is every pair's normal gap at the present s, updated for
-     * the motion. Returns whether a pair closed.
-     */
-    bool
-    close_along(Trial                &trial,
-                const Vector<double> &motion,
-                std::vector<double>  &gap) const;
-
-    /**
-     * The load path (source/contact/load_path.cc): the increment's load
-     * scaled by s from the last converged state (s = 0) to the full
-     * increment (s = 1). With the states fixed the solution is affine in
-     * s; the path moves to the first s where a pair's condition fails,
-     * switches that pair (every transition of the joint law, open -> slip
-     * included), and goes on. Returns the number of switches; throws
-     * ExcNoEquilibrium at a mechanism, ExcIncrementNotConverged if it stops
-     * otherwise.
-     */
-    unsigned int
-    load_path(const unsigned int increment);
-
-    /**
      * solve_increment()'s data: Delta_F in the pairs' frames (condensed;
      * from each block's response u_F in its solution) or the monolithic
      * system's loads, and the floating blocks' load resultants F_e.
@@ -476,7 +440,10 @@ namespace mbfem
                const unsigned int increment,
                const bool         from_last_solve);
 
-    /** run_method() for the load path, its exceptions as outcomes. */
+    /**
+     * run_method() for the load path (LoadPath), from set_path_start();
+     * where it reaches s = 1, its states polished by finish_path().
+     */
     MethodOutcome
     run_load_path(const unsigned int increment);
 
@@ -543,31 +510,21 @@ namespace mbfem
     slip_is_elastic() const;
 
     /**
-     * load_path(), its start: the load (s = 0) for which the committed
+     * The load path's start: the load (s = 0) for which the committed
      * solution is exact with the present flexibility and coupling.
      */
     void
     set_path_start();
 
     /**
-     * load_path() at a singular segment that unloading cannot mend: throws
-     * ExcNoEquilibrium naming the mechanism, or ExcIncrementNotConverged.
+     * The load path at s = 1: the fast iteration from the path's
+     * @p states. Adds its iterations to @p outcome, which converges if
+     * they settle and leave no mechanism.
      */
     void
-    throw_singular_path(const Trial       &trial,
-                        const std::string &head,
-                        const double       s,
-                        const unsigned int switches) const;
-
-    /**
-     * load_path() at s = 1: the fast iteration from the path's states;
-     * returns its iterations, throws if it does not settle or leaves a
-     * mechanism.
-     */
-    unsigned int
-    finish_path(const Trial       &trial,
+    finish_path(const Trial       &states,
                 const unsigned int increment,
-                const unsigned int switches);
+                MethodOutcome     &outcome);
 
     /**
      * Sets the data of the increment to the load fraction @p s: s = 1 is
@@ -576,43 +533,6 @@ namespace mbfem
      */
     void
     set_load_fraction(const double s);
-
-    /** The solution of one path segment and where it ends. */
-    struct Segment;
-
-    /** Solves @p trial at s_a and at 1; false if singular. */
-    bool
-    solve_segment(Trial &trial, const double s_a, Segment &segment);
-
-    /**
-     * 3D: Newton on the slip directions of @p trial at the present load
-     * fraction (states fixed); returns false if singular.
-     */
-    bool
-    correct_directions(Trial &trial, Segment &segment);
-
-    /**
-     * The smallest margin of pair @p k's state in @p trial at t on
-     * @p segment (scaled: negative means failed), and which condition:
-     * what first_event() samples and bisects.
-     */
-    struct Margin;
-    Margin
-    state_margin(const Trial       &trial,
-                 const Segment     &segment,
-                 const unsigned int k,
-                 const double       t) const;
-
-    /** The first event on @p segment: pair, kind and where. */
-    struct Event;
-    Event
-    first_event(const Trial &trial, const Segment &segment) const;
-
-    /** The state of the pair of @p event once it has happened. */
-    void
-    switch_state(Trial         &trial,
-                 const Segment &segment,
-                 const Event   &event) const;
 
     /** The pairs, with the joint laws of restart()'s strength factor. */
     std::vector<ContactPair<dim>> contact_pairs;

@@ -25,6 +25,21 @@ namespace mbfem
   {
     Vector<double>      displacement;
     std::vector<double> resultant;
+
+    /**
+     * These loads at the fraction @p s of the way from @p start (s = 0) to
+     * @p full (s = 1), or beyond (s > 1, the load continuation).
+     */
+    void
+    set_fraction(const IncrementLoads &start,
+                 const IncrementLoads &full,
+                 const double          s)
+    {
+      displacement = start.displacement;
+      displacement.sadd(1. - s, s, full.displacement);
+      for (unsigned int a = 0; a < resultant.size(); ++a)
+        resultant[a] = (1. - s) * start.resultant[a] + s * full.resultant[a];
+    }
   };
 
 
