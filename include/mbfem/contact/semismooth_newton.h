@@ -116,10 +116,14 @@ namespace mbfem
     /**
      * solve_system()'s step: Newton's direction from the Jacobian (which
      * it factorises), cut to @p trust, with backtracking; false if the
-     * Jacobian is singular or no length decreases 1/2 |F|^2.
+     * Jacobian is singular (then @p singular) or no length decreases
+     * 1/2 |F|^2.
      */
     bool
-    line_search(System &system, const double merit, const double trust) const;
+    line_search(System      &system,
+                const double merit,
+                const double trust,
+                bool        &singular) const;
 
     /** solve_system()'s fallback step: Levenberg-Marquardt. */
     bool
