@@ -664,7 +664,7 @@ namespace mbfem
   {
     // In 3D a block can be in equilibrium with every pair slipping below
     // its limit: the slip directions, spread by the block's elastic
-    // deformation, hold it. mechanism() ignores that (it counts a slipping
+    // deformation, hold it. MechanismTest ignores that (it counts a slipping
     // pair as no resistance), so such states name a mechanism. The answer
     // stands if its slip is of the order of the blocks' deformation: the
     // fast iteration's check has verified the forces within every pair's

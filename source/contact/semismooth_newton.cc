@@ -113,6 +113,11 @@ namespace mbfem
     Vector<double> anchor;
     /** Whether the Jacobian's pattern holds the springs' entries. */
     bool pattern_has_springs = false;
+    /**
+     * Whether a singular Jacobian ends solve_system() at once (the first
+     * try, where the springs follow), and whether it did.
+     */
+    bool to_springs = false, stopped_singular = false;
 
     void
     add_unit(const unsigned int row, const unsigned int column, const double c)
@@ -353,17 +358,17 @@ namespace mbfem
         bool         singular = false;
         if (line_search(system, merit, trust, singular))
           continue;
-        // A singular Jacobian without springs, where springs can be used:
-        // a floating block that its pairs' states leave without support.
-        // Levenberg-Marquardt's step does not mend that (on the wall of
-        // 1013 blocks it failed at every damping, 15 factorisations of the
-        // augmented system); solve_proximal()'s springs hold the block.
-        if (singular && system.spring == 0. && proximal_stiffness > 0. &&
-            coupling.n_modes() > 0)
+        // The first try at a singular Jacobian, where springs follow:
+        // mostly a floating block that its pairs' states leave without
+        // support, which Levenberg-Marquardt's step does not mend (on the
+        // wall of 1013 blocks it failed at every damping, 15
+        // factorisations of the augmented system) and the springs of
+        // solve_proximal() hold.
+        if (singular && system.to_springs)
           {
-            system.failure = "its Jacobian was singular after " +
-                             std::to_string(it + 1) +
-                             " iterations (a floating block without support)";
+            system.stopped_singular = true;
+            system.failure =
+              "its Jacobian was singular at step " + std::to_string(it + 1);
             return false;
           }
         if (!levenberg_marquardt_step(system, merit, damping))
@@ -659,6 +664,34 @@ namespace mbfem
 
   template <int dim>
   bool
+  SemismoothNewton<dim>::solve_system_or_springs(System       &system,
+                                                 unsigned int &iterations) const
+  {
+    const Vector<double> before = system.u;
+    system.to_springs       = proximal_stiffness > 0. && coupling.n_modes() > 0;
+    system.stopped_singular = false;
+    bool solved             = solve_system(system, iterations);
+    system.to_springs       = false;
+    if (solved || solve_proximal(system, before, iterations))
+      return true;
+    if (!system.stopped_singular)
+      return false;
+    // The springs did not conclude either: the first try once more from
+    // its start, this time with Levenberg-Marquardt's steps past a
+    // singular Jacobian (which can also be a degenerate pair's rows).
+    const std::string springs = system.failure;
+    system.u                  = before;
+    solved                    = solve_system(system, iterations);
+    if (!solved)
+      system.failure =
+        springs + "; then with Levenberg-Marquardt's steps, " + system.failure;
+    return solved;
+  }
+
+
+
+  template <int dim>
+  bool
   SemismoothNewton<dim>::solve(const Vector<double> &start,
                                unsigned int         &iterations)
   {
@@ -677,9 +710,7 @@ namespace mbfem
     // limit first, and the system is solved again from where it was.
     for (unsigned int breaks = 0; breaks <= n_pairs; ++breaks)
       {
-        const Vector<double> before = system.u;
-        if (!solve_system(system, iterations) &&
-            !solve_proximal(system, before, iterations))
+        if (!solve_system_or_springs(system, iterations))
           return false;
         const unsigned int worst = worst_tension(system);
         if (worst == numbers::invalid_unsigned_int)

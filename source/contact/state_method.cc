@@ -138,13 +138,16 @@ namespace mbfem
         "Proximal stiffness",
         "1e-4",
         Patterns::Double(0.),
-        "Where Newton's method stalls (a floating block that no closed pair "
-        "holds makes its Jacobian singular), it starts again with every "
+        "Where Newton's method stalls or meets a singular Jacobian (mostly "
+        "a floating block that no closed pair holds), it starts again with "
+        "every "
         "floating block held by a spring to where it was, this stiff "
         "relative to a contact, and moves the springs' anchors to the "
         "blocks after each solve (a proximal point iteration on the rigid "
         "motions) until the springs carry nothing; then Newton's method "
-        "without springs concludes. 0: no such second try.");
+        "without springs concludes; where the springs fail after a "
+        "singular Jacobian, Newton's method runs once more with "
+        "Levenberg-Marquardt's steps past it. 0: no springs.");
       prm.declare_entry("Proximal steps",
                         "100",
                         Patterns::Integer(1),

@@ -518,8 +518,9 @@ namespace mbfem
 
     /**
      * The load path at s = 1: the fast iteration from the path's
-     * @p states. Adds its iterations to @p outcome, which converges if
-     * they settle and leave no mechanism.
+     * @p states. @p outcome converges if they settle and leave no
+     * mechanism, and then counts the fast iteration's iterations too
+     * (a failure counts the path's switches only).
      */
     void
     finish_path(const Trial       &states,

@@ -170,7 +170,8 @@ namespace mbfem
     const std::vector<Tensor<1, dim>>        &committed_displacement;
     const IncrementLoads                     &start_loads, &full_loads;
     IncrementLoads                           &loads;
-    const typename FastIteration<dim>::Solve &solve;
+    /** A copy: the caller's function may be a temporary. */
+    const typename FastIteration<dim>::Solve solve;
   };
 } // namespace mbfem
 

@@ -66,7 +66,10 @@ namespace mbfem
     bool
     solve(const Vector<double> &start, unsigned int &iterations);
 
-    /** Why solve() failed: the iteration limit, or no descent. */
+    /**
+     * Why solve() failed: the iteration limit, no descent, or a singular
+     * Jacobian, and then why the springs failed.
+     */
     std::string
     failure() const;
 
@@ -97,12 +100,26 @@ namespace mbfem
     double
     evaluate(System &system) const;
 
-    /** Damped Newton on one system; false if it stalls or is singular. */
+    /**
+     * Damped Newton on one system; false if it stalls, or (where
+     * system.to_springs) at its first singular Jacobian.
+     */
     bool
     solve_system(System &system, unsigned int &iterations) const;
 
     /**
-     * Where solve_system() stalled: from @p start again, every floating
+     * One system (one set of broken joints): solve_system() without
+     * springs, stopping at a singular Jacobian where floating blocks
+     * exist; where that fails, solve_proximal(); where that fails too
+     * after a singular Jacobian, solve_system() again from the same start
+     * with Levenberg-Marquardt's steps past it.
+     */
+    bool
+    solve_system_or_springs(System &system, unsigned int &iterations) const;
+
+    /**
+     * Where solve_system() stalled or met a singular Jacobian: from
+     * @p start again, every floating
      * block held by a spring to an anchor that moves to the block after
      * each solve, until the springs carry nothing; then once more without
      * springs. The Jacobian stays regular while a block has no closed

@@ -92,7 +92,8 @@ namespace mbfem
      */
     double newton_tolerance = 1e-11;
     /**
-     * Where Newton's method stalls, it is run again with the floating
+     * Where Newton's method stalls or meets a singular Jacobian, it is
+     * run again with the floating
      * blocks held by springs to where they were (a proximal point
      * iteration on their rigid motions): the springs' stiffness relative
      * to the contact stiffness (doc/state_iteration.md), and the number of
