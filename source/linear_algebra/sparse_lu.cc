@@ -64,7 +64,7 @@ namespace mbfem
 
 
   bool
-  SparseLU::factorize(const SparseMatrix<double> &matrix)
+  SparseLU::factorize(const SparseMatrix<double> &matrix, const bool drop_zeros)
   {
     Assert(matrix.m() == matrix.n(), ExcNotQuadratic());
     const long n = matrix.m();
@@ -78,7 +78,8 @@ namespace mbfem
       {
         row.clear();
         for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
-          row.emplace_back(entry->column(), entry->value());
+          if (!drop_zeros || entry->value() != 0.)
+            row.emplace_back(entry->column(), entry->value());
         std::sort(row.begin(), row.end());
         for (const auto &[column, v] : row)
           {

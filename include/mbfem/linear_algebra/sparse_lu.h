@@ -39,10 +39,14 @@ namespace mbfem
 
     /**
      * Factorises @p matrix (square). False where UMFPACK finds it
-     * singular (a zero pivot); throws on UMFPACK's other errors.
+     * singular (a zero pivot); throws on UMFPACK's other errors. With
+     * @p drop_zeros the entries that are exactly zero are left out of
+     * UMFPACK's pattern (less fill where many are; the analysis is then
+     * redone whenever the nonzeros move).
      */
     bool
-    factorize(const SparseMatrix<double> &matrix);
+    factorize(const SparseMatrix<double> &matrix,
+              const bool                  drop_zeros = false);
 
     /** x = A^{-1} x, in place, with the last factorisation. */
     void
