@@ -57,6 +57,29 @@ namespace
     return r.l2_norm() / b.l2_norm();
   }
 
+  /** Factorises, solves and prints the counts and the residual's test. */
+  void
+  factorise_and_report(const char                 *label,
+                       mbfem::SparseLU            &lu,
+                       const SparseMatrix<double> &matrix,
+                       const Vector<double>       &b,
+                       const bool                  drop_zeros)
+  {
+    const bool     factorised = lu.factorize(matrix, drop_zeros);
+    Vector<double> x(b);
+    if (factorised)
+      lu.solve(x);
+    const auto [reused, analysed] = lu.symbolic_counts();
+    std::printf("%sfactorised: %s, analyses %u, reuses %u, residual below "
+                "1e-12: %s\n",
+                label,
+                factorised ? "yes" : "no",
+                analysed,
+                reused,
+                factorised && relative_residual(matrix, x, b) < 1e-12 ? "yes" :
+                                                                        "NO");
+  }
+
   void
   pattern_of(const unsigned int n,
              const unsigned int n_modes,
@@ -100,19 +123,7 @@ main()
   for (const auto *p : {&pattern, &pattern, &other_pattern})
     {
       fill(*p, matrix, n_modes, random);
-      const bool     factorised = lu.factorize(matrix);
-      Vector<double> x(b);
-      if (factorised)
-        lu.solve(x);
-      const auto [reused, analysed] = lu.symbolic_counts();
-      std::printf("factorised: %s, analyses %u, reuses %u, residual below "
-                  "1e-12: %s\n",
-                  factorised ? "yes" : "no",
-                  analysed,
-                  reused,
-                  factorised && relative_residual(matrix, x, b) < 1e-12 ?
-                    "yes" :
-                    "NO");
+      factorise_and_report("", lu, matrix, b, false);
     }
 
   // Exact zeros kept, then left out (drop_zeros, as for a Newton Jacobian
@@ -124,22 +135,11 @@ main()
       if (entry->column() != i)
         entry->value() = 0.;
   for (const bool drop_zeros : {false, true, true})
-    {
-      const bool     factorised = lu.factorize(matrix, drop_zeros);
-      Vector<double> x(b);
-      if (factorised)
-        lu.solve(x);
-      const auto [reused, analysed] = lu.symbolic_counts();
-      std::printf("zeros %s: factorised: %s, analyses %u, reuses %u, "
-                  "residual below 1e-12: %s\n",
-                  drop_zeros ? "left out" : "kept",
-                  factorised ? "yes" : "no",
-                  analysed,
-                  reused,
-                  factorised && relative_residual(matrix, x, b) < 1e-12 ?
-                    "yes" :
-                    "NO");
-    }
+    factorise_and_report(drop_zeros ? "zeros left out: " : "zeros kept: ",
+                         lu,
+                         matrix,
+                         b,
+                         drop_zeros);
 
   // A zero row: singular, reported by false.
   fill(pattern, matrix, n_modes, random);
