@@ -272,6 +272,17 @@ namespace mbfem
 
 
   template <int dim>
+  typename FastIteration<dim>::Solve
+  ContactSolver<dim>::trial_solve()
+  {
+    return [this](const Trial &trial, Vector<double> &x, Vector<double> &d) {
+      return solve_trial(trial, x, d);
+    };
+  }
+
+
+
+  template <int dim>
   void
   ContactSolver<dim>::set_increment_data(
     const std::vector<std::unique_ptr<Block<dim>>> &blocks)
@@ -464,11 +475,7 @@ namespace mbfem
                        start_loads,
                        full_loads,
                        loads,
-                       [this](const Trial    &t,
-                              Vector<double> &x,
-                              Vector<double> &d) {
-                         return solve_trial(t, x, d);
-                       });
+                       trial_solve());
     const auto    end = path.run("Load increment " + std::to_string(increment));
     MethodOutcome outcome;
     outcome.iterations     = end.switches;
@@ -739,12 +746,10 @@ namespace mbfem
                                        mechanisms,
                                        contact_pairs,
                                        max_iterations);
-    const auto               outcome = iteration.run(
-      trial,
-      [this](const Trial &t, Vector<double> &x, Vector<double> &d) {
-        return solve_trial(t, x, d);
-      },
-      "Load increment " + std::to_string(increment));
+    const auto               outcome =
+      iteration.run(trial,
+                    trial_solve(),
+                    "Load increment " + std::to_string(increment));
     if (outcome.converged)
       {
         accept(outcome.states, outcome.solution, outcome.displacement);

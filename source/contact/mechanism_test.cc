@@ -10,6 +10,31 @@
 
 namespace mbfem
 {
+  namespace
+  {
+    /**
+     * The null space of the positive semi-definite Gram matrix @p gram of
+     * the constraints on the floating modes: its eigenvectors whose
+     * eigenvalues are below 1e-10 times its largest diagonal entry (at
+     * least @p floor), into the columns of @p vectors; returns how many.
+     */
+    unsigned int
+    null_space(LAPACKFullMatrix<double> &gram,
+               const double              floor,
+               FullMatrix<double>       &vectors)
+    {
+      double largest = floor;
+      for (unsigned int a = 0; a < gram.m(); ++a)
+        largest = std::max(largest, gram(a, a));
+      Vector<double> eigenvalues;
+      gram.compute_eigenvalues_symmetric(
+        -1., 1e-10 * largest, 1e-14, eigenvalues, vectors);
+      return eigenvalues.size();
+    }
+  } // namespace
+
+
+
   template <int dim>
   MechanismTest<dim>::MechanismTest(
     const std::vector<ContactPair<dim>>      &pairs,
@@ -89,20 +114,15 @@ namespace mbfem
           for (unsigned int a = 0; a < q; ++a)
             for (unsigned int c = 0; c < q; ++c)
               gram(a, c) += column[a] * column[c];
-        double largest = 1.;
-        for (unsigned int a = 0; a < q; ++a)
-          largest = std::max(largest, gram(a, a));
-        Vector<double>     eigenvalues;
         FullMatrix<double> eigenvectors;
-        gram.compute_eigenvalues_symmetric(
-          -1., 1e-10 * largest, 1e-14, eigenvalues, eigenvectors);
-        if (eigenvalues.size() == 0)
+        const unsigned int n_free = null_space(gram, 1., eigenvectors);
+        if (n_free == 0)
           continue;
         message << "\n    " << coupling.block_name(b)
                 << " cannot be in equilibrium: its contact pairs (" << counts[0]
                 << " stick, " << counts[1] << " slip, " << counts[2]
                 << " open) cannot hold its rigid-body motion";
-        for (unsigned int v = 0; v < eigenvalues.size(); ++v)
+        for (unsigned int v = 0; v < n_free; ++v)
           {
             Vector<double> combination(coupling.modes(b)[0].size());
             for (unsigned int a = 0; a < q; ++a)
@@ -152,27 +172,22 @@ namespace mbfem
           for (const auto &[c, y] : entries)
             gram(a, c) += x * y;
       }
-    double largest = 0.;
-    for (unsigned int a = 0; a < q; ++a)
-      largest = std::max(largest, gram(a, a));
-    Vector<double>     eigenvalues;
-    FullMatrix<double> null_space;
-    gram.compute_eigenvalues_symmetric(
-      -1., 1e-10 * std::max(largest, 1e-300), 1e-14, eigenvalues, null_space);
-    if (eigenvalues.size() == 0)
+    FullMatrix<double> free;
+    const unsigned int n_free = null_space(gram, 1e-300, free);
+    if (n_free == 0)
       return Vector<double>();
 
     // Of the free motions, the one the loads drive (their work on the
     // modes, projected on the free space); a free motion they do no work
     // on is named as it is.
     Vector<double> motion(q);
-    for (unsigned int v = 0; v < eigenvalues.size(); ++v)
+    for (unsigned int v = 0; v < n_free; ++v)
       {
         double work = 0.;
         for (unsigned int a = 0; a < q; ++a)
-          work += loads.resultant[a] * null_space(a, v);
+          work += loads.resultant[a] * free(a, v);
         for (unsigned int a = 0; a < q; ++a)
-          motion(a) += work * null_space(a, v);
+          motion(a) += work * free(a, v);
       }
     if (motion.l2_norm() < 1e-8 * std::max(1e-300, [&] {
                              double f = 0.;
@@ -181,7 +196,7 @@ namespace mbfem
                              return std::sqrt(f);
                            }()))
       for (unsigned int a = 0; a < q; ++a)
-        motion(a) = null_space(a, 0);
+        motion(a) = free(a, 0);
     return motion;
   }
 

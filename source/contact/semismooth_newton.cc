@@ -113,11 +113,6 @@ namespace mbfem
     Vector<double> anchor;
     /** Whether the Jacobian's pattern holds the springs' entries. */
     bool pattern_has_springs = false;
-    /**
-     * Whether a singular Jacobian ends solve_system() at once (the first
-     * try, where the springs follow), and whether it did.
-     */
-    bool to_springs = false, stopped_singular = false;
 
     void
     add_unit(const unsigned int row, const unsigned int column, const double c)
@@ -327,7 +322,8 @@ namespace mbfem
   template <int dim>
   bool
   SemismoothNewton<dim>::solve_system(System       &system,
-                                      unsigned int &iterations) const
+                                      unsigned int &iterations,
+                                      bool         *stopped_singular) const
   {
     const unsigned int n_r = n_pairs * dim;
     // The scale of the residual and of a step: the increment's data, not
@@ -364,9 +360,9 @@ namespace mbfem
         // wall of 1013 blocks it failed at every damping, 15
         // factorisations of the augmented system) and the springs of
         // solve_proximal() hold.
-        if (singular && system.to_springs)
+        if (singular && stopped_singular != nullptr)
           {
-            system.stopped_singular = true;
+            *stopped_singular = true;
             system.failure =
               "its Jacobian was singular at step " + std::to_string(it + 1);
             return false;
@@ -668,23 +664,23 @@ namespace mbfem
                                                  unsigned int &iterations) const
   {
     const Vector<double> before = system.u;
-    system.to_springs       = proximal_stiffness > 0. && coupling.n_modes() > 0;
-    system.stopped_singular = false;
-    bool solved             = solve_system(system, iterations);
-    system.to_springs       = false;
+    const bool springs = proximal_stiffness > 0. && coupling.n_modes() > 0;
+    bool       stopped_singular = false;
+    bool       solved =
+      solve_system(system, iterations, springs ? &stopped_singular : nullptr);
     if (solved || solve_proximal(system, before, iterations))
       return true;
-    if (!system.stopped_singular)
+    if (!stopped_singular)
       return false;
     // The springs did not conclude either: the first try once more from
     // its start, this time with Levenberg-Marquardt's steps past a
     // singular Jacobian (which can also be a degenerate pair's rows).
-    const std::string springs = system.failure;
-    system.u                  = before;
-    solved                    = solve_system(system, iterations);
+    const std::string first = system.failure;
+    system.u                = before;
+    solved                  = solve_system(system, iterations);
     if (!solved)
       system.failure =
-        springs + "; then with Levenberg-Marquardt's steps, " + system.failure;
+        first + "; then with Levenberg-Marquardt's steps, " + system.failure;
     return solved;
   }
 

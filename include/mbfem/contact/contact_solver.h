@@ -379,6 +379,10 @@ namespace mbfem
                 Vector<double> &solution,
                 Vector<double> &displacement);
 
+    /** solve_trial() as the function the state methods are given. */
+    typename FastIteration<dim>::Solve
+    trial_solve();
+
 
     /**
      * The certificate's mechanism (per floating mode) as each moving

@@ -101,11 +101,14 @@ namespace mbfem
     evaluate(System &system) const;
 
     /**
-     * Damped Newton on one system; false if it stalls, or (where
-     * system.to_springs) at its first singular Jacobian.
+     * Damped Newton on one system; false if it stalls. With
+     * @p stopped_singular, also at its first singular Jacobian (the first
+     * try, where the springs follow), which it then sets true.
      */
     bool
-    solve_system(System &system, unsigned int &iterations) const;
+    solve_system(System       &system,
+                 unsigned int &iterations,
+                 bool         *stopped_singular = nullptr) const;
 
     /**
      * One system (one set of broken joints): solve_system() without
