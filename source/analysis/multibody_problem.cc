@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -553,13 +554,18 @@ namespace mbfem
      * exist along it too although the iteration failed
      * (ExcNotConvergedButAdmissible, 3), or, undecided or without
      * interfaces, the failure as it was (ExcIncrementNotConverged, 1).
+     * None exist also where statics without the joints the load path
+     * broke admits no forces (2). Those two verdicts that statics alone
+     * cannot give leave the increment's problem on disk: @p write_problem
+     * writes it and says where.
      */
     template <int dim>
     [[noreturn]] void
-    end_with_certificate(const ContactSolver<dim> *contact,
-                         const std::string        &message,
-                         const double              time,
-                         const bool                no_equilibrium)
+    end_with_certificate(const ContactSolver<dim>           *contact,
+                         const std::string                  &message,
+                         const double                        time,
+                         const bool                          no_equilibrium,
+                         const std::function<std::string()> &write_problem)
     {
       if (!contact)
         {
@@ -582,6 +588,25 @@ namespace mbfem
                      "balance the floating blocks' loads (the statics "
                      "certificate below).\n    "
                   << text.str();
+          throw Exceptions::ExcNoEquilibrium(verdict.str());
+        }
+      // Statics with every joint the path broke counted unbroken admits
+      // forces, but the increment's own loads broke them on the way.
+      if (const auto path = contact->certify_path_breaking();
+          path && path->verdict == Verdict::none)
+        {
+          std::ostringstream verdict;
+          verdict << "No equilibrium at t = " << time
+                  << " once the joints the load path broke have lost their "
+                     "strength: no contact forces within what is left of "
+                     "it balance the floating blocks' loads (the second "
+                     "statics certificate below). Breaking is for good, and "
+                     "each pair broke at a load where the blocks were in "
+                     "equilibrium; rigid-block statics with those joints "
+                     "whole (the first certificate) cannot see this.\n    "
+                  << text.str() << "    Statics certificate at t = " << time
+                  << " after the load path: " << path->description << "\n"
+                  << write_problem();
           throw Exceptions::ExcNoEquilibrium(verdict.str());
         }
       // A mechanism along which no strength holds the loads (factor
@@ -641,7 +666,8 @@ namespace mbfem
                    "conditions of the existence result (doc/decisions.md, "
                    "\"A method that concludes\"): check the increment's "
                    "problem with another solver, or report it.";
-          throw Exceptions::ExcNotConvergedButAdmissible(text.str() + why);
+          throw Exceptions::ExcNotConvergedButAdmissible(
+            text.str() + why + "\n" + write_problem());
         }
       throw Exceptions::ExcIncrementNotConverged(text.str());
     }
@@ -724,28 +750,20 @@ namespace mbfem
       if (first_failure.empty())
         first_failure = message_of(failure);
       if (halvings == history.max_halvings)
-        try
-          {
-            end_with_certificate<dim>(
-              contact,
-              first_failure +
-                (history.max_halvings == 0 ?
-                   "" :
-                   "    The increment was also tried in steps down to 1/" +
-                     std::to_string(1u << halvings) +
-                     " of its size ('Load history/Maximum step halvings = " +
-                     std::to_string(history.max_halvings) + "').\n") +
-                "    " + earlier_results() + "\n",
-              target,
-              std::is_same_v<std::decay_t<decltype(failure)>,
-                             Exceptions::ExcNoEquilibrium>);
-          }
-        catch (const Exceptions::ExcNotConvergedButAdmissible &e)
-          {
-            // A defect of the solver: leave the problem to reproduce it.
-            throw Exceptions::ExcNotConvergedButAdmissible(
-              message_of(e) + write_failed_problem(k, target));
-          }
+        end_with_certificate<dim>(
+          contact,
+          first_failure +
+            (history.max_halvings == 0 ?
+               "" :
+               "    The increment was also tried in steps down to 1/" +
+                 std::to_string(1u << halvings) +
+                 " of its size ('Load history/Maximum step halvings = " +
+                 std::to_string(history.max_halvings) + "').\n") +
+            "    " + earlier_results() + "\n",
+          target,
+          std::is_same_v<std::decay_t<decltype(failure)>,
+                         Exceptions::ExcNoEquilibrium>,
+          [&]() { return write_failed_problem(k, target); });
       for (const auto &block : blocks)
         block->plastic_state().restore();
       ++halvings;

@@ -162,6 +162,7 @@ namespace mbfem
     method          = StateMethod::fast;
     fast_iterations = 0;
     path_switches   = 0;
+    path_broken.clear();
   }
 
 
@@ -329,6 +330,7 @@ namespace mbfem
     method          = methods.front();
     fast_iterations = 0;
     path_switches   = 0;
+    path_broken.clear();
     MethodOutcome verdict;
     bool          verdict_is_primary = false;
     // Why Lemke's method, the semismooth Newton method and the
@@ -482,6 +484,8 @@ namespace mbfem
     outcome.no_equilibrium = end.no_equilibrium;
     outcome.failure        = end.failure;
     path_switches          = end.switches;
+    path_broken            = end.states.broken;
+    path_reach             = end.s;
     if (end.reached_end)
       finish_path(end.states, increment, outcome);
     set_load_fraction(1.);
@@ -983,10 +987,51 @@ namespace mbfem
   ContactSolver<dim>::certify(const bool with_mechanism_factor,
                               const bool unbroken) const
   {
+    return certify_with(unbroken ? std::vector<bool>(n_pairs, false) :
+                                   current.broken,
+                        with_mechanism_factor);
+  }
+
+
+
+  template <int dim>
+  std::optional<typename StaticAdmissibility<dim>::Result>
+  ContactSolver<dim>::certify_path_breaking() const
+  {
+    std::vector<unsigned int> broke;
+    for (unsigned int k = 0; k < path_broken.size(); ++k)
+      if (path_broken[k] && !current.broken[k] &&
+          contact_pairs[k].joint.has_strength())
+        broke.push_back(k);
+    if (broke.empty())
+      return std::nullopt;
+
+    auto               result = certify_with(path_broken, false);
+    std::ostringstream text;
+    text << "the load path (up to s = " << std::setprecision(6) << path_reach
+         << " of this increment) broke " << broke.size()
+         << " pair(s) whose cohesion or tensile strength the certificate "
+            "above counts:";
+    for (unsigned int i = 0; i < broke.size() && i < 10; ++i)
+      text << "\n      pair " << broke[i] << " at ("
+           << contact_pairs[broke[i]].a.point << ")";
+    if (broke.size() > 10)
+      text << "\n      ... and " << broke.size() - 10 << " more";
+    text << "\n    Without their strength, " << result.description;
+    result.description = text.str();
+    return result;
+  }
+
+
+
+  template <int dim>
+  typename StaticAdmissibility<dim>::Result
+  ContactSolver<dim>::certify_with(const std::vector<bool> &broken,
+                                   const bool with_mechanism_factor) const
+  {
     using Certificate = StaticAdmissibility<dim>;
     typename Certificate::Result result =
-      statics(unbroken ? std::vector<bool>(n_pairs, false) : current.broken)
-        .solve(with_mechanism_factor);
+      statics(broken).solve(with_mechanism_factor);
 
     std::ostringstream text;
     text << std::fixed << std::setprecision(6);

@@ -144,7 +144,10 @@ namespace mbfem
             if (n > 0 && seen_here.insert(checks.signature(trial)).second &&
                 switches <= max_switches)
               continue;
-            return singular_end(trial, head, s, switches);
+            Outcome end = singular_end(trial, head, s, switches);
+            end.states  = trial;
+            end.s       = s;
+            return end;
           }
         const Event event = first_event(trial, segment);
         if (event.pair == numbers::invalid_unsigned_int)
@@ -166,6 +169,8 @@ namespace mbfem
           {
             Outcome cycle;
             cycle.switches = switches;
+            cycle.states   = trial;
+            cycle.s        = s;
             cycle.failure  = head +
                             ": the load path cannot continue: the states of "
                             "pair " +
@@ -179,6 +184,7 @@ namespace mbfem
     end.reached_end = true;
     end.switches    = switches;
     end.states      = trial;
+    end.s           = 1.;
     return end;
   }
 

@@ -21,6 +21,7 @@
 #include <deal.II/base/timer.h>
 
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -303,6 +304,20 @@ namespace mbfem
             const bool unbroken              = false) const;
 
     /**
+     * The statics certificate with the joints as the increment's load path
+     * left them where it stopped: the pairs it broke on the way (each at a
+     * load where the blocks were in equilibrium) without their cohesion
+     * and tensile strength, for good. Where this admits no forces and
+     * certify() does, the increment has no equilibrium after the breaking
+     * its own loads caused, which rigid-block statics with every joint
+     * unbroken cannot see (doc/decisions.md, "Joints the load path broke").
+     * Empty where the last increment's path broke no pair beyond those
+     * certify() counts as broken, or did not run.
+     */
+    std::optional<typename StaticAdmissibility<dim>::Result>
+    certify_path_breaking() const;
+
+    /**
      * Names of the floating blocks none of whose pairs stuck in the
      * increment just solved (all slip or open): such an increment may have
      * converged to a sliding state no forces can hold, and is certified.
@@ -558,6 +573,18 @@ namespace mbfem
      */
     StaticAdmissibility<dim>
     statics(const std::vector<bool> &broken) const;
+
+    /** statics(@p broken) solved, with its verdict in words. */
+    typename StaticAdmissibility<dim>::Result
+    certify_with(const std::vector<bool> &broken,
+                 const bool               with_mechanism_factor) const;
+
+    /**
+     * The pairs' broken flags where the increment's load path stopped
+     * (empty if it did not run) and the load fraction it held up to.
+     */
+    std::vector<bool> path_broken;
+    double            path_reach = 0.;
 
     /** The arguments of the last restart(), for continue_from(). */
     double strength_factor = 1.;

@@ -49,8 +49,14 @@ namespace mbfem
       bool         no_equilibrium = false; // a mechanism no switch mends
       unsigned int switches       = 0;
       std::string  failure;
-      /** The states at s = 1 (where reached_end). */
+      /**
+       * The states where the path ended: at s = 1 where reached_end, else
+       * where it stopped. Their broken flags are the joints the path broke
+       * for good (ContactSolver::certify_path_breaking()).
+       */
       Trial states;
+      /** The fraction of the increment's load the path held up to. */
+      double s = 0.;
     };
 
     /**
