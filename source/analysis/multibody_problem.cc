@@ -607,7 +607,7 @@ namespace mbfem
                   << text.str() << "    Statics certificate at t = " << time
                   << " after the load path: " << path->description << "\n"
                   << write_problem();
-          throw Exceptions::ExcNoEquilibrium(verdict.str());
+          throw Exceptions::ExcNoEquilibriumAfterBreaking(verdict.str());
         }
       // A mechanism along which no strength holds the loads (factor
       // below 0.001: blocks lifting off, as the LP's duals can give for a

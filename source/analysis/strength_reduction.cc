@@ -171,15 +171,21 @@ namespace mbfem
     // Say what the failures were: statics proved them, or the iteration
     // gave up (then the model may well hold).
     const StrengthTrial::Outcome last = trial_list.back().outcome;
-    std::ostringstream           message;
+    const bool         after_breaking = trial_list.back().after_breaking;
+    std::ostringstream message;
     message << "Strength reduction: the load history fails at every factor "
                "tried, down to F = "
             << hi << " (the joints' strengths multiplied by " << 1. / hi
             << "); the last trial ended with '" << to_string(last) << "'"
-            << (last == StrengthTrial::Outcome::no_equilibrium ?
+            << (last != StrengthTrial::Outcome::no_equilibrium ?
+                  ", which proves nothing of the model." :
+                after_breaking ?
+                  ": no contact forces hold the blocks once the joints its "
+                  "load path broke have lost their strength (with them "
+                  "whole, rigid-block statics admits forces), so the model "
+                  "has no factor of safety along this loading." :
                   ": no contact forces within the joints' strength hold the "
-                  "blocks, so the model has no factor of safety." :
-                  ", which proves nothing of the model.")
+                  "blocks, so the model has no factor of safety.")
             << " Run it with Mode = simulation to see why.";
     if (last == StrengthTrial::Outcome::no_equilibrium)
       throw Exceptions::ExcNoEquilibrium(message.str());
@@ -323,6 +329,13 @@ namespace mbfem
            << guess << " (the search's first guess)";
     // Where the state iteration gave up, the model may hold more (or the
     // elastic model may have no equilibrium there): say so.
+    for (const auto &trial : trial_list)
+      if (trial.factor == hi && trial.after_breaking)
+        line << "\n  at F = " << hi
+             << " no equilibrium once the joints its load path broke lost "
+                "their strength; rigid-block statics with them whole admits "
+                "forces (a verdict for the path's history, doc/decisions.md "
+                "\"Joints the load path broke\")";
     for (const auto &trial : trial_list)
       if (trial.factor == hi &&
           trial.outcome == StrengthTrial::Outcome::not_converged)

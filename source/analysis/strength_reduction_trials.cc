@@ -166,6 +166,9 @@ namespace mbfem
     catch (const ExceptionBase &e)
       {
         trial.outcome = trial_outcome(e, factor);
+        trial.after_breaking =
+          dynamic_cast<const Exceptions::ExcNoEquilibriumAfterBreaking *>(&e) !=
+          nullptr;
         if (statics_bound)
           measure_statics(trial, true);
       }

@@ -346,6 +346,9 @@ namespace mbfem
         if (outcome.converged)
           {
             path_switches = (m == StateMethod::fast ? 0 : outcome.iterations);
+            // The increment has an equilibrium: nothing for
+            // certify_path_breaking() to say, whatever fails after it.
+            path_broken.clear();
             return fast_iterations + path_switches;
           }
         const bool primary =
@@ -484,8 +487,13 @@ namespace mbfem
     outcome.no_equilibrium = end.no_equilibrium;
     outcome.failure        = end.failure;
     path_switches          = end.switches;
-    path_broken            = end.states.broken;
-    path_reach             = end.s;
+    // Where the path reached s = 1 it found its states there: the second
+    // certificate is for a path that stopped.
+    if (!end.reached_end)
+      {
+        path_broken = end.states.broken;
+        path_reach  = end.s;
+      }
     if (end.reached_end)
       finish_path(end.states, increment, outcome);
     set_load_fraction(1.);

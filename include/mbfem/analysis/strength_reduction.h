@@ -54,6 +54,12 @@ namespace mbfem
 
     double  factor  = 1.;
     Outcome outcome = Outcome::converged;
+    /**
+     * No equilibrium only once the joints its load path broke lost their
+     * strength (Exceptions::ExcNoEquilibriumAfterBreaking): rigid-block
+     * statics with them whole admits forces.
+     */
+    bool after_breaking = false;
     /** Increments that converged, of how many. */
     unsigned int increments = 0, n_increments = 0;
     /** The state methods that concluded its increments ("fast", ...). */

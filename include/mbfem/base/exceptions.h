@@ -34,6 +34,19 @@ namespace mbfem
     DeclException1(ExcNoEquilibrium, std::string, << arg1);
 
     /**
+     * No equilibrium once the joints the increment's load path broke have
+     * lost their strength, where rigid-block statics with them whole
+     * admits forces (exit code 2 too): a verdict for the path's history
+     * (doc/decisions.md, "Joints the load path broke"), which strength
+     * reduction reports as such.
+     */
+    class ExcNoEquilibriumAfterBreaking : public ExcNoEquilibrium
+    {
+    public:
+      using ExcNoEquilibrium::ExcNoEquilibrium;
+    };
+
+    /**
      * An increment failed for good (after any step halvings), although the
      * statics certificate found contact forces within the joints' strength
      * that balance the floating blocks, and so does limit equilibrium along
