@@ -340,7 +340,8 @@ namespace mbfem
     for (const StateMethod m : methods)
       {
         method = m; // the one running, for the progress line
-        const MethodOutcome outcome = run_method(m, increment, from_last_solve);
+        const MethodOutcome outcome =
+          run_method(m, increment, from_last_solve, m != methods.back());
         if (m == StateMethod::fast)
           fast_iterations = outcome.iterations;
         if (outcome.converged)
@@ -389,7 +390,8 @@ namespace mbfem
   typename ContactSolver<dim>::MethodOutcome
   ContactSolver<dim>::run_method(const StateMethod  m,
                                  const unsigned int increment,
-                                 const bool         from_last_solve)
+                                 const bool         from_last_solve,
+                                 const bool         followed)
   {
     MethodOutcome     outcome;
     const std::string head = "Load increment " + std::to_string(increment);
@@ -400,12 +402,12 @@ namespace mbfem
         // exists only exactly at a limit, and in 3D the linearised slip
         // direction can make the system regular with an unbounded slip
         // instead.
-        const auto fast =
-          fast_iteration(from_last_solve ?
-                           current :
-                           state_check->open_on_demand(committed,
-                                                       committed_solution),
-                         increment);
+        const auto fast = fast_iteration(
+          from_last_solve ?
+            current :
+            state_check->open_on_demand(committed, committed_solution),
+          increment,
+          followed ? method_parameters.fast_stall_iterations : 0);
         outcome.iterations = fast.iterations;
         outcome.converged =
           fast.converged &&
@@ -752,12 +754,14 @@ namespace mbfem
   template <int dim>
   typename FastIteration<dim>::Outcome
   ContactSolver<dim>::fast_iteration(const Trial       &trial,
-                                     const unsigned int increment)
+                                     const unsigned int increment,
+                                     const unsigned int stall_iterations)
   {
     const FastIteration<dim> iteration(*state_check,
                                        mechanisms,
                                        contact_pairs,
-                                       max_iterations);
+                                       max_iterations,
+                                       stall_iterations);
     const auto               outcome =
       iteration.run(trial,
                     trial_solve(),

@@ -11,11 +11,13 @@ namespace mbfem
   FastIteration<dim>::FastIteration(const StateCheck<dim>    &checks,
                                     const MechanismTest<dim> &mechanisms,
                                     const std::vector<ContactPair<dim>> &pairs,
-                                    const unsigned int max_iterations)
+                                    const unsigned int max_iterations,
+                                    const unsigned int stall_iterations)
     : checks(checks)
     , mechanisms(mechanisms)
     , pairs(pairs)
     , max_iterations(max_iterations)
+    , stall_iterations(stall_iterations)
   {}
 
 
@@ -32,6 +34,9 @@ namespace mbfem
     Trial                 last_good, last_good_next;
     std::vector<double>   last_good_violation;
     bool                  have_good = false;
+    // The fewest pairs failing their check so far, and when (undamped).
+    unsigned int fewest_failing = numbers::invalid_unsigned_int;
+    unsigned int fewest_at      = 0;
 
     for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
       {
@@ -74,6 +79,21 @@ namespace mbfem
             outcome.solved_slip_direction = solved;
             outcome.converged             = true;
             return outcome;
+          }
+        if (!damped && stall_iterations > 0)
+          {
+            const unsigned int failing = n_switching(trial, next);
+            if (failing < fewest_failing)
+              {
+                fewest_failing = failing;
+                fewest_at      = iteration;
+              }
+            else if (iteration - fewest_at >= stall_iterations)
+              {
+                outcome.failure =
+                  describe_stall(head, iteration, failing, fewest_failing);
+                return outcome;
+              }
           }
         have_good           = true;
         last_good           = trial;
@@ -125,6 +145,35 @@ namespace mbfem
     result.direction_stiffness = to.direction_stiffness;
     return result;
   }
+
+
+  template <int dim>
+  unsigned int
+  FastIteration<dim>::n_switching(const Trial &trial, const Trial &next) const
+  {
+    unsigned int n = 0;
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      n +=
+        (next.state[k] != trial.state[k] || next.broken[k] != trial.broken[k]);
+    return n;
+  }
+
+
+
+  template <int dim>
+  std::string
+  FastIteration<dim>::describe_stall(const std::string &head,
+                                     const unsigned int iteration,
+                                     const unsigned int failing,
+                                     const unsigned int fewest) const
+  {
+    return head + ": the fast iteration stalls: " + std::to_string(failing) +
+           " pairs fail their check after " + std::to_string(iteration) +
+           " iterations, and none of the last " +
+           std::to_string(stall_iterations) + " had fewer than " +
+           std::to_string(fewest) + " ('Contact/Fast iteration stall').";
+  }
+
 
 
   template <int dim>

@@ -118,6 +118,17 @@ namespace mbfem
       "or the load path (no equilibrium if one met it). The order "
       "matters where an increment has more than one solution: each "
       "method may find another (doc/state_iteration.md).");
+    prm.declare_entry(
+      "Fast iteration stall",
+      "10",
+      Patterns::Integer(0),
+      "Where another method follows the fast iteration in 'State method', "
+      "the fast iteration gives way to it once the number of pairs that "
+      "fail their check has not fallen to a new low in this many solves "
+      "(while it switches every failing pair): it then wanders, each solve "
+      "a full one (on the 125-block cube 100 solves, 60 s, before the "
+      "next method concluded). 0: only 'Maximum iterations' and a cycle "
+      "end it.");
     prm.enter_subsection("Semismooth Newton");
     {
       prm.declare_entry("Maximum iterations",
@@ -192,7 +203,8 @@ namespace mbfem
   void
   StateMethodParameters::parse_parameters(dealii::ParameterHandler &prm)
   {
-    methods = parse_state_methods(prm.get("State method"));
+    methods               = parse_state_methods(prm.get("State method"));
+    fast_stall_iterations = prm.get_integer("Fast iteration stall");
     prm.enter_subsection("Semismooth Newton");
     {
       newton_max_iterations = prm.get_integer("Maximum iterations");

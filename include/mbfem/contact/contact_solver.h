@@ -413,10 +413,14 @@ namespace mbfem
 
     /**
      * The fast iteration (FastIteration) from @p trial on this solver's
-     * interface system; where it converges, its answer is current.
+     * interface system; where it converges, its answer is current. With
+     * @p stall_iterations > 0 it gives up where it stalls (another method
+     * follows).
      */
     typename FastIteration<dim>::Outcome
-    fast_iteration(const Trial &trial, const unsigned int increment);
+    fast_iteration(const Trial       &trial,
+                   const unsigned int increment,
+                   const unsigned int stall_iterations = 0);
 
     /**
      * Pair @p k's tangential relative displacement in the increment just
@@ -452,12 +456,13 @@ namespace mbfem
      * Runs @p method on the increment. Where the semismooth Newton method
      * or the load continuation fails, the current states are those before
      * it (which the certificate then reads); the fast iteration and the
-     * load path leave theirs.
+     * load path leave theirs. @p followed: another method comes after it.
      */
     MethodOutcome
     run_method(const StateMethod  method,
                const unsigned int increment,
-               const bool         from_last_solve);
+               const bool         from_last_solve,
+               const bool         followed);
 
     /**
      * run_method() for the load path (LoadPath), from set_path_start();

@@ -61,12 +61,17 @@ namespace mbfem
 
     /**
      * At most @p max_iterations solves ('Contact/Maximum iterations');
-     * everything is referenced, not copied.
+     * everything is referenced, not copied. With @p stall_iterations > 0
+     * it also gives up where, switching every failing pair, the number of
+     * pairs that fail has not fallen to a new low in as many solves: it
+     * wanders then, each solve a full one, while another method follows
+     * ('Contact/Fast iteration stall').
      */
     FastIteration(const StateCheck<dim>               &checks,
                   const MechanismTest<dim>            &mechanisms,
                   const std::vector<ContactPair<dim>> &pairs,
-                  const unsigned int                   max_iterations);
+                  const unsigned int                   max_iterations,
+                  const unsigned int                   stall_iterations = 0);
 
     /**
      * The iteration from @p trial; @p head starts its messages ("Load
@@ -85,6 +90,17 @@ namespace mbfem
                   const Trial               &to,
                   const std::vector<double> &violation);
 
+    /** How many pairs @p next switches from @p trial. */
+    unsigned int
+    n_switching(const Trial &trial, const Trial &next) const;
+
+    /** The message when the undamped iteration stalls. */
+    std::string
+    describe_stall(const std::string &head,
+                   const unsigned int iteration,
+                   const unsigned int failing,
+                   const unsigned int fewest) const;
+
     /** The message when the states cycle even damped. */
     std::string
     describe_cycle(const std::string &head,
@@ -96,6 +112,7 @@ namespace mbfem
     const MechanismTest<dim>            &mechanisms;
     const std::vector<ContactPair<dim>> &pairs;
     const unsigned int                   max_iterations;
+    const unsigned int                   stall_iterations;
   };
 } // namespace mbfem
 

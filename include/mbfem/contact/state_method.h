@@ -82,6 +82,13 @@ namespace mbfem
                                         StateMethod::lemke,
                                         StateMethod::load_continuation};
 
+    /**
+     * The fast iteration gives way to the next method where the number of
+     * pairs failing their check has not reached a new low in this many
+     * solves ('Contact/Fast iteration stall'; 0: never).
+     */
+    unsigned int fast_stall_iterations = 10;
+
     /** Newton iterations per system before the method gives up. */
     unsigned int newton_max_iterations = 200;
     /**
