@@ -34,9 +34,9 @@ namespace mbfem
     Trial                 last_good, last_good_next;
     std::vector<double>   last_good_violation;
     bool                  have_good = false;
-    // The fewest pairs failing their check so far, and when (undamped).
-    unsigned int fewest_failing = numbers::invalid_unsigned_int;
-    unsigned int fewest_at      = 0;
+    // The fewest pairs switching so far, and when (undamped).
+    unsigned int fewest_switching = numbers::invalid_unsigned_int;
+    unsigned int fewest_at        = 0;
 
     for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
       {
@@ -80,21 +80,6 @@ namespace mbfem
             outcome.converged             = true;
             return outcome;
           }
-        if (!damped && stall_iterations > 0)
-          {
-            const unsigned int failing = n_switching(trial, next);
-            if (failing < fewest_failing)
-              {
-                fewest_failing = failing;
-                fewest_at      = iteration;
-              }
-            else if (iteration - fewest_at >= stall_iterations)
-              {
-                outcome.failure =
-                  describe_stall(head, iteration, failing, fewest_failing);
-                return outcome;
-              }
-          }
         have_good           = true;
         last_good           = trial;
         last_good_next      = next;
@@ -114,6 +99,22 @@ namespace mbfem
             else
               {
                 outcome.failure = describe_cycle(head, iteration, trial, next);
+                return outcome;
+              }
+          }
+        // Undamped still (no cycle): has it stalled?
+        if (!damped && stall_iterations > 0)
+          {
+            const unsigned int switching = n_switching(trial, next);
+            // Only the 3D slip directions moving counts as progress.
+            if (switching < fewest_switching || switching == 0)
+              {
+                fewest_switching = switching;
+                fewest_at        = iteration;
+              }
+            else if (iteration - fewest_at >= stall_iterations)
+              {
+                outcome.failure = describe_stall(head, iteration, switching);
                 return outcome;
               }
           }
@@ -151,10 +152,13 @@ namespace mbfem
   unsigned int
   FastIteration<dim>::n_switching(const Trial &trial, const Trial &next) const
   {
-    unsigned int n = 0;
-    for (unsigned int k = 0; k < pairs.size(); ++k)
-      n +=
-        (next.state[k] != trial.state[k] || next.broken[k] != trial.broken[k]);
+    // What the states' signature tells apart: the state, the 2D slip
+    // sense, breaking and tensile slip.
+    const std::string from = checks.signature(trial),
+                      to   = checks.signature(next);
+    unsigned int n         = 0;
+    for (unsigned int k = 0; k < from.size(); ++k)
+      n += (from[k] != to[k]);
     return n;
   }
 
@@ -164,14 +168,15 @@ namespace mbfem
   std::string
   FastIteration<dim>::describe_stall(const std::string &head,
                                      const unsigned int iteration,
-                                     const unsigned int failing,
-                                     const unsigned int fewest) const
+                                     const unsigned int switching) const
   {
-    return head + ": the fast iteration stalls: " + std::to_string(failing) +
-           " pairs fail their check after " + std::to_string(iteration) +
-           " iterations, and none of the last " +
-           std::to_string(stall_iterations) + " had fewer than " +
-           std::to_string(fewest) + " ('Contact/Fast iteration stall').";
+    return head + ": the fast iteration stalls: at solve " +
+           std::to_string(iteration) + " " + std::to_string(switching) +
+           " pairs switch, and in the " + std::to_string(stall_iterations) +
+           " solves since the fewest (solve " +
+           std::to_string(iteration - stall_iterations) +
+           ") none switched fewer ('Contact/Fast iteration stall'), so it "
+           "gave way to the next method. Use more load increments.";
   }
 
 

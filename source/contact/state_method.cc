@@ -124,11 +124,13 @@ namespace mbfem
       Patterns::Integer(0),
       "Where another method follows the fast iteration in 'State method', "
       "the fast iteration gives way to it once the number of pairs that "
-      "fail their check has not fallen to a new low in this many solves "
-      "(while it switches every failing pair): it then wanders, each solve "
-      "a full one (on the 125-block cube 100 solves, 60 s, before the "
-      "next method concluded). 0: only 'Maximum iterations' and a cycle "
-      "end it.");
+      "switch state has not fallen to a new low in this many solves "
+      "(while it switches every failing pair, before a cycle makes it "
+      "switch one at a time): it then wanders, each solve a full one (on "
+      "the 125-block cube 100 solves, 60 s, before the next method "
+      "concluded). 0: never; it ends where it converges, at 'Maximum "
+      "iterations', at a singular trial or where it cycles switching one "
+      "pair at a time.");
     prm.enter_subsection("Semismooth Newton");
     {
       prm.declare_entry("Maximum iterations",

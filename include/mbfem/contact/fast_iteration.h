@@ -62,10 +62,12 @@ namespace mbfem
     /**
      * At most @p max_iterations solves ('Contact/Maximum iterations');
      * everything is referenced, not copied. With @p stall_iterations > 0
-     * it also gives up where, switching every failing pair, the number of
-     * pairs that fail has not fallen to a new low in as many solves: it
-     * wanders then, each solve a full one, while another method follows
-     * ('Contact/Fast iteration stall').
+     * it also gives up where, switching every failing pair (before a
+     * cycle makes it switch one at a time), the number of pairs that
+     * switch has not fallen to a new low in as many solves: it wanders
+     * then, each solve a full one, while another method follows
+     * ('Contact/Fast iteration stall'). A solve where only the 3D slip
+     * directions move counts as progress.
      */
     FastIteration(const StateCheck<dim>               &checks,
                   const MechanismTest<dim>            &mechanisms,
@@ -90,7 +92,10 @@ namespace mbfem
                   const Trial               &to,
                   const std::vector<double> &violation);
 
-    /** How many pairs @p next switches from @p trial. */
+    /**
+     * How many pairs @p next switches from @p trial, as the states'
+     * signature tells them apart (StateCheck::signature()).
+     */
     unsigned int
     n_switching(const Trial &trial, const Trial &next) const;
 
@@ -98,8 +103,7 @@ namespace mbfem
     std::string
     describe_stall(const std::string &head,
                    const unsigned int iteration,
-                   const unsigned int failing,
-                   const unsigned int fewest) const;
+                   const unsigned int switching) const;
 
     /** The message when the states cycle even damped. */
     std::string
