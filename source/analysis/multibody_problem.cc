@@ -601,9 +601,11 @@ namespace mbfem
                      "strength: no contact forces within what is left of "
                      "it balance the floating blocks' loads (the second "
                      "statics certificate below). Breaking is for good, and "
-                     "each pair broke at a load where the blocks were in "
-                     "equilibrium; rigid-block statics with those joints "
-                     "whole (the first certificate) cannot see this.\n    "
+                     "the path broke them in the order of its events from "
+                     "an equilibrium (doc/decisions.md, \"Joints the load "
+                     "path broke\", says what this proves); rigid-block "
+                     "statics with those joints whole (the first "
+                     "certificate) cannot see this.\n    "
                   << text.str() << "    Statics certificate at t = " << time
                   << " after the load path: " << path->description << "\n"
                   << write_problem();

@@ -327,24 +327,28 @@ namespace mbfem
     if (std::isfinite(guess) && std::isfinite(bound) && guess < bound)
       line << "\n  limit equilibrium along the statics limit's mechanism: "
            << guess << " (the search's first guess)";
-    // Where the state iteration gave up, the model may hold more (or the
-    // elastic model may have no equilibrium there): say so.
+    // What bounds F from above where statics alone does not: the failing
+    // trial at hi ended after its load path broke joints, or the state
+    // iteration gave up (the model may hold more, or the elastic model
+    // may have no equilibrium there): say so.
     for (const auto &trial : trial_list)
-      if (trial.factor == hi && trial.after_breaking)
-        line << "\n  at F = " << hi
-             << " no equilibrium once the joints its load path broke lost "
-                "their strength; rigid-block statics with them whole admits "
-                "forces (a verdict for the path's history, doc/decisions.md "
-                "\"Joints the load path broke\")";
-    for (const auto &trial : trial_list)
-      if (trial.factor == hi &&
-          trial.outcome == StrengthTrial::Outcome::not_converged)
-        line << "\n  F is a lower bound: at F = " << hi
-             << " the state iteration gave up although rigid-block "
-                "statics admits forces (exit code 3 of a plain run); "
-                "either the solver failed there or the elastic model has "
-                "no equilibrium (statics cannot tell where the joint "
-                "opens)";
+      {
+        if (trial.factor != hi)
+          continue;
+        if (trial.after_breaking)
+          line << "\n  at F = " << hi
+               << " no equilibrium once the joints its load path broke lost "
+                  "their strength; rigid-block statics with them whole "
+                  "admits forces (a verdict for the path's history, "
+                  "doc/decisions.md \"Joints the load path broke\")";
+        else if (trial.outcome == StrengthTrial::Outcome::not_converged)
+          line << "\n  F is a lower bound: at F = " << hi
+               << " the state iteration gave up although rigid-block "
+                  "statics admits forces (exit code 3 of a plain run); "
+                  "either the solver failed there or the elastic model has "
+                  "no equilibrium (statics cannot tell where the joint "
+                  "opens)";
+      }
     return line.str();
   }
 

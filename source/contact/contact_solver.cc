@@ -491,13 +491,13 @@ namespace mbfem
     path_switches          = end.switches;
     // Where the path reached s = 1 it found its states there: the second
     // certificate is for a path that stopped.
-    if (!end.reached_end)
+    if (end.reached_end)
+      finish_path(end.states, increment, outcome);
+    else
       {
         path_broken = end.states.broken;
         path_reach  = end.s;
       }
-    if (end.reached_end)
-      finish_path(end.states, increment, outcome);
     set_load_fraction(1.);
     return outcome;
   }

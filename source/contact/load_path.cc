@@ -144,10 +144,7 @@ namespace mbfem
             if (n > 0 && seen_here.insert(checks.signature(trial)).second &&
                 switches <= max_switches)
               continue;
-            Outcome end = singular_end(trial, head, s, switches);
-            end.states  = trial;
-            end.s       = s;
-            return end;
+            return singular_end(trial, head, s, switches);
           }
         const Event event = first_event(trial, segment);
         if (event.pair == numbers::invalid_unsigned_int)
@@ -599,6 +596,8 @@ namespace mbfem
     Outcome           end;
     const std::string motion = mechanisms.describe(trial);
     end.switches             = switches;
+    end.states               = trial;
+    end.s                    = s;
     end.no_equilibrium       = !motion.empty();
     if (end.no_equilibrium)
       end.failure =

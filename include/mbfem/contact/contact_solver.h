@@ -305,9 +305,9 @@ namespace mbfem
 
     /**
      * The statics certificate with the joints as the increment's load path
-     * left them where it stopped: the pairs it broke on the way (each at a
-     * load where the blocks were in equilibrium) without their cohesion
-     * and tensile strength, for good. Where this admits no forces and
+     * left them where it stopped: the pairs it broke on the way, in the
+     * order of its events, without their cohesion and tensile strength,
+     * for good. Where this admits no forces and
      * certify() does, the increment has no equilibrium after the breaking
      * its own loads caused, which rigid-block statics with every joint
      * unbroken cannot see (doc/decisions.md, "Joints the load path broke").

@@ -84,8 +84,8 @@ namespace mbfem
 
     /**
      * The fast iteration gives way to the next method where the number of
-     * pairs failing their check has not reached a new low in this many
-     * solves ('Contact/Fast iteration stall'; 0: never).
+     * pairs switching state has not reached a new low in this many solves
+     * ('Contact/Fast iteration stall'; 0: never).
      */
     unsigned int fast_stall_iterations = 10;
 
