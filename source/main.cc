@@ -19,10 +19,24 @@
 #include <filesystem>
 #include <iostream>
 #include <new>
+#include <streambuf>
 #include <string>
 
 namespace
 {
+  /** Where the screen output of the ranks other than 0 goes. */
+  class NullBuffer : public std::streambuf
+  {
+  protected:
+    int
+    overflow(int c) override
+    {
+      return c == EOF ? 0 : c;
+    }
+  };
+
+
+
   void
   print_usage(std::ostream &out)
   {
@@ -113,10 +127,19 @@ main(int argc, char *argv[])
   // action: held back until it is done, a signal then ends the run at its
   // first check, with mbfem's message.
   mbfem::hold_termination_signals();
+  // Never freed: std::cout is flushed after main returns.
+  NullBuffer *const silent = new NullBuffer;
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       mbfem::catch_termination_signals();
+      // Under mpirun every rank runs the same contact iteration and meets
+      // the same errors; rank 0 speaks for them (doc/parallel.md).
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        {
+          std::cout.rdbuf(silent);
+          std::cerr.rdbuf(silent);
+        }
       ConditionalOStream pcout(
         std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
 
@@ -133,9 +156,6 @@ main(int argc, char *argv[])
         }
       AssertThrow(argc == 2,
                   ExcMessage("mbfem takes one parameter file; see --help."));
-      AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
-                  ExcMessage("This version of mbfem runs on one MPI process; "
-                             "run it without mpirun or with -np 1."));
 
       const unsigned int dim = mbfem::read_dimension(first);
       if (dim == 2)

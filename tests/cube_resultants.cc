@@ -12,6 +12,9 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // Under mpirun (NAME.mpirun=2.output) rank 0 prints, as mbfem does.
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+    std::cout.rdbuf(nullptr);
   if (argc > 1)
     return run_file(argc, argv);
   const std::string parameters = SOURCE_DIR "/../parameters";

@@ -3,6 +3,7 @@
 #include <mbfem/base/exceptions.h>
 #include <mbfem/base/input_checks.h>
 #include <mbfem/base/interruption.h>
+#include <mbfem/base/parallel.h>
 #include <mbfem/base/parameters.h>
 #include <mbfem/mesh/mesh_checks.h>
 #include <mbfem/output/interface_report.h>
@@ -85,10 +86,29 @@ namespace mbfem
                                "equilibrium with the full weight from the "
                                "start."));
       }
+    assign_block_owners();
     check_point_supports(parameters.boundary_conditions,
                          blocks,
                          pcout.get_stream());
     check_functions_are_finite(parameters, blocks);
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::assign_block_owners()
+  {
+    // Under mpirun each block is factorised and solved on one rank; every
+    // rank holds the meshes and runs the contact iteration (doc/parallel.md).
+    std::vector<double> costs;
+    for (const auto &block : blocks)
+      costs.push_back(block->cost());
+    const std::vector<unsigned int> owners =
+      Parallel::assign_owners(costs, Parallel::n_ranks());
+    if (Parallel::n_ranks() > 1)
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        blocks[b]->set_owner(MPI_COMM_WORLD, owners[b]);
   }
 
 
@@ -102,22 +122,25 @@ namespace mbfem
     const bool factorise = !parameters.contact.declares_interfaces() ||
                            parameters.contact.runs_condensed();
     parameters.boundary_conditions.set_time(0.);
-    for (const auto &block : blocks)
-      {
+    // Under mpirun each rank factorises its own blocks at the same time.
+    Parallel::together(MPI_COMM_WORLD, [&]() {
+      for (const auto &block : blocks)
         {
-          TimerOutput::Scope t(timer, "assembly");
-          block->setup_system(parameters.boundary_conditions);
-          if (factorise)
-            block->assemble_stiffness();
-        }
-        if (factorise)
           {
-            TimerOutput::Scope t(timer, "factorisation");
-            Timer              clock;
-            block->factorize();
-            condensed_seconds += clock.wall_time();
+            TimerOutput::Scope t(timer, "assembly");
+            block->setup_system(parameters.boundary_conditions);
+            if (factorise)
+              block->assemble_stiffness();
           }
-      }
+          if (factorise)
+            {
+              TimerOutput::Scope t(timer, "factorisation");
+              Timer              clock;
+              block->factorize();
+              condensed_seconds += clock.wall_time();
+            }
+        }
+    });
   }
 
 
@@ -407,6 +430,7 @@ namespace mbfem
               contact->condensed_problem(k, time).write(problem_stem(k, ""));
             write_summary(k, time, iterations, reference_iterations);
           }
+        check_ranks_agree();
         contact->commit();
         if (reference)
           reference->commit();
@@ -420,9 +444,12 @@ namespace mbfem
       {
         TimerOutput::Scope       t(timer, "output");
         std::vector<std::string> files;
-        for (const auto &block : blocks)
-          if (block->presence(time) > 0.) // not before a stage adds it
-            files.push_back(writer->write_block(*block, block->get_id(), k));
+        // Each rank writes the blocks it owns; an error on one ends all.
+        Parallel::together(MPI_COMM_WORLD, [&]() {
+          for (const auto &block : blocks)
+            if (block->presence(time) > 0.) // not before a stage adds it
+              files.push_back(writer->write_block(*block, block->get_id(), k));
+        });
         writer->add_step(time, files);
         if (pair_writer)
           pair_writer->add_step(time, {pair_file});
@@ -851,12 +878,44 @@ namespace mbfem
 
   template <int dim>
   void
+  MultiBodyProblem<dim>::share_solutions()
+  {
+    if (Parallel::n_ranks() > 1)
+      for (const auto &block : blocks)
+        block->share_solution();
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::check_ranks_agree() const
+  {
+    if (Parallel::n_ranks() == 1)
+      return;
+    // FNV-1a over the pairs' states and broken flags.
+    unsigned long long hash = 14695981039346656037ull;
+    for (unsigned int k = 0; k < contact->pairs().size(); ++k)
+      for (const unsigned int value :
+           {static_cast<unsigned int>(contact->state(k)),
+            static_cast<unsigned int>(contact->broken(k))})
+        hash = (hash ^ value) * 1099511628211ull;
+    Parallel::check_same_on_all_ranks(hash, "the states of the contact pairs");
+  }
+
+
+
+  template <int dim>
+  void
   MultiBodyProblem<dim>::commit_step()
   {
     for (const auto &block : blocks)
       block->plastic_state().commit();
     if (contact)
-      contact->commit();
+      {
+        check_ranks_agree();
+        contact->commit();
+      }
     if (reference)
       reference->commit();
   }
@@ -875,20 +934,24 @@ namespace mbfem
       !contact || contact->formulation() == ContactFormulation::condensed;
     {
       TimerOutput::Scope t(timer, "load response");
-      for (unsigned int b = 0; b < blocks.size(); ++b)
-        {
-          Block<dim> &block = *blocks[b];
-          block.assemble_load(parameters.boundary_conditions, time);
-          if (water)
-            water->add_load(b, block, time);
-          add_released_forces(b, time); // from the pairs of removed blocks
-          if (condensed)
-            {
-              Timer clock;
-              block.solve();
-              condensed_seconds += clock.wall_time();
-            }
-        }
+      Parallel::together(MPI_COMM_WORLD, [&]() {
+        for (unsigned int b = 0; b < blocks.size(); ++b)
+          {
+            Block<dim> &block = *blocks[b];
+            block.assemble_load(parameters.boundary_conditions, time);
+            if (water)
+              water->add_load(b, block, time);
+            add_released_forces(b, time); // from the pairs of removed blocks
+            if (condensed)
+              {
+                Timer clock;
+                block.solve(); // on the block's owner
+                condensed_seconds += clock.wall_time();
+              }
+          }
+      });
+      if (condensed)
+        share_solutions();
     }
     if (contact)
       {
@@ -911,21 +974,25 @@ namespace mbfem
           }
         TimerOutput::Scope t(timer, "field recovery");
         Timer              clock;
-        for (unsigned int b = 0; b < blocks.size(); ++b)
-          if (condensed)
-            {
-              std::vector<types::global_dof_index> dofs;
-              std::vector<double>                  forces;
-              contact->forces_on_block(b, dofs, forces);
-              blocks[b]->add_point_forces(dofs, forces);
-              blocks[b]->solve(contact->floating_amplitudes(b));
-            }
-          else
-            {
-              Vector<double> displacement;
-              contact->block_solution(b, *blocks[b], displacement);
-              blocks[b]->set_solution(std::move(displacement));
-            }
+        Parallel::together(MPI_COMM_WORLD, [&]() {
+          for (unsigned int b = 0; b < blocks.size(); ++b)
+            if (condensed)
+              {
+                std::vector<types::global_dof_index> dofs;
+                std::vector<double>                  forces;
+                contact->forces_on_block(b, dofs, forces);
+                blocks[b]->add_point_forces(dofs, forces);
+                blocks[b]->solve(contact->floating_amplitudes(b));
+              }
+            else
+              {
+                Vector<double> displacement;
+                contact->block_solution(b, *blocks[b], displacement);
+                blocks[b]->set_solution(std::move(displacement));
+              }
+        });
+        if (condensed)
+          share_solutions();
         (condensed ? condensed_seconds : monolithic_seconds) +=
           clock.wall_time();
       }
@@ -1151,19 +1218,21 @@ namespace mbfem
   MultiBodyProblem<dim>::update_tangent_stiffness()
   {
     bool changed = false;
-    for (const auto &block : blocks)
-      if (block->plastic_state().tangent_changed())
-        {
-          changed = true;
+    Parallel::together(MPI_COMM_WORLD, [&]() {
+      for (const auto &block : blocks)
+        if (block->plastic_state().tangent_changed())
           {
-            TimerOutput::Scope t(timer, "assembly");
-            block->assemble_stiffness();
+            changed = true;
+            {
+              TimerOutput::Scope t(timer, "assembly");
+              block->assemble_stiffness();
+            }
+            TimerOutput::Scope t(timer, "factorisation");
+            Timer              clock;
+            block->factorize(); // on the block's owner
+            condensed_seconds += clock.wall_time();
           }
-          TimerOutput::Scope t(timer, "factorisation");
-          Timer              clock;
-          block->factorize();
-          condensed_seconds += clock.wall_time();
-        }
+    });
     if (changed && contact)
       {
         TimerOutput::Scope t(timer, "flexibility");

@@ -1,6 +1,7 @@
 #include <mbfem/analysis/strength_reduction.h>
 #include <mbfem/base/exceptions.h>
 #include <mbfem/base/text_input.h>
+#include <mbfem/output/output.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/function_parser.h>
@@ -9,7 +10,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -405,10 +405,7 @@ namespace mbfem
   void
   StrengthReduction::write_csv(const std::string &filename) const
   {
-    std::ofstream csv(filename);
-    AssertThrow(csv.good(),
-                ExcMessage("Cannot write the strength reduction table <" +
-                           filename + ">."));
+    std::ostringstream csv;
     csv << "trial,F,result,increments,methods,iterations,seconds,"
            "largest_displacement,largest_slip\n"
         << std::setprecision(10);
@@ -420,6 +417,6 @@ namespace mbfem
             << (test_mode ? 0. : t.seconds) << "," << t.largest_displacement
             << "," << t.largest_slip << "\n";
       }
-    AssertThrow(csv.good(), ExcMessage("Writing <" + filename + "> failed."));
+    write_file_atomically(filename, csv.str());
   }
 } // namespace mbfem

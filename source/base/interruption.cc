@@ -1,4 +1,5 @@
 #include <mbfem/base/interruption.h>
+#include <mbfem/base/parallel.h>
 
 #include <csignal>
 #include <cstdio>
@@ -75,7 +76,12 @@ namespace mbfem
     // The screen line of the increment reaches a log file now, not when
     // a buffer fills.
     std::fflush(stdout);
-    if (signal_received != 0)
-      throw Interrupted{signal_received, last_complete_increment};
+    // Under mpirun the ranks stop together, at the same check, if any of
+    // them was signalled.
+    int signal = signal_received;
+    if (Parallel::n_ranks() > 1)
+      MPI_Allreduce(MPI_IN_PLACE, &signal, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    if (signal != 0)
+      throw Interrupted{signal, last_complete_increment};
   }
 } // namespace mbfem

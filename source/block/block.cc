@@ -1,4 +1,5 @@
 #include <mbfem/base/exceptions.h>
+#include <mbfem/base/parallel.h>
 #include <mbfem/block/block.h>
 #include <mbfem/block/flexibility.h>
 #include <mbfem/block/floating_modes.h>
@@ -115,12 +116,62 @@ namespace mbfem
     floating.compute(dof_handler, mapping, physical_constraints, name());
     make_constraints(boundary_conditions, floating.pins());
 
+    if (!local)
+      return; // another rank's block: no stiffness here
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
     stiffness.reinit(complete_index_set(dof_handler.n_dofs()),
                      complete_index_set(dof_handler.n_dofs()),
                      dsp,
                      MPI_COMM_SELF);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::set_owner(const MPI_Comm comm, const unsigned int owner_rank)
+  {
+    communicator = comm;
+    owner        = owner_rank;
+    local        = Utilities::MPI::this_mpi_process(comm) == owner_rank;
+  }
+
+
+
+  template <int dim>
+  bool
+  Block<dim>::is_local() const
+  {
+    return local;
+  }
+
+
+
+  template <int dim>
+  MPI_Comm
+  Block<dim>::get_communicator() const
+  {
+    return communicator;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Block<dim>::get_owner() const
+  {
+    return owner;
+  }
+
+
+
+  template <int dim>
+  double
+  Block<dim>::cost() const
+  {
+    return static_cast<double>(triangulation.n_active_cells()) *
+           fe.n_dofs_per_cell();
   }
 
 
@@ -352,9 +403,12 @@ namespace mbfem
   {
     // The matrix alone: its constrained rows and columns do not depend on
     // the prescribed values, so one factorisation serves all times.
-    stiffness = 0.;
-    assemble_matrix(constraints, stiffness);
-    stiffness.compress(VectorOperation::add);
+    if (local)
+      {
+        stiffness = 0.;
+        assemble_matrix(constraints, stiffness);
+        stiffness.compress(VectorOperation::add);
+      }
     plastic.tangent_assembled();
   }
 
@@ -382,6 +436,8 @@ namespace mbfem
   void
   Block<dim>::factorize()
   {
+    if (!local)
+      return; // another rank's block
     try
       {
         direct_solver.factorize(stiffness);
@@ -688,12 +744,23 @@ namespace mbfem
   void
   Block<dim>::solve(const std::vector<double> &alpha)
   {
+    if (!local)
+      return; // share_solution() brings it
     direct_solver.solve(solution, load);
     constraints.distribute(solution);
     AssertThrow(alpha.empty() || alpha.size() == floating.modes().size(),
                 ExcInternalError());
     for (unsigned int i = 0; i < alpha.size(); ++i)
       solution.add(alpha[i], floating.modes()[i]);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::share_solution()
+  {
+    Parallel::broadcast(communicator, owner, solution);
   }
 
 
@@ -713,6 +780,7 @@ namespace mbfem
   Block<dim>::flexibility(
     const std::vector<types::global_dof_index> &dofs) const
   {
+    Assert(local, ExcMessage("The flexibility of another rank's block."));
     const unsigned int m = dofs.size();
     // Many contact DoFs: selected entries of K^{-1} from MUMPS
     // (block/flexibility.h), one factorisation instead of m solves; a
@@ -775,7 +843,9 @@ namespace mbfem
     return std::make_unique<ContactFlexibility>(stiffness,
                                                 homogeneous_constraints,
                                                 dofs,
-                                                !plastic.uses_newton());
+                                                !plastic.uses_newton(),
+                                                communicator,
+                                                owner);
   }
 
 

@@ -82,18 +82,33 @@ namespace mbfem
     const TrilinosWrappers::SparseMatrix       &stiffness,
     const AffineConstraints<double>            &constraints,
     const std::vector<types::global_dof_index> &dofs,
-    const bool                                  positive_definite)
-    : solver(std::make_unique<MumpsSolver>())
+    const bool                                  positive_definite,
+    const MPI_Comm                              comm,
+    const unsigned int                          owner)
+    : local(comm == MPI_COMM_SELF ||
+            Utilities::MPI::this_mpi_process(comm) == owner)
   {
     Masters map(constraints, dofs);
     master_dofs = std::move(map.master_dofs);
     weights     = std::move(map.weights);
-    solver->factorize(stiffness, positive_definite);
+    if (is_local())
+      {
+        solver = std::make_unique<MumpsSolver>();
+        solver->factorize(stiffness, positive_definite);
+      }
   }
 
 
 
   ContactFlexibility::~ContactFlexibility() = default;
+
+
+
+  bool
+  ContactFlexibility::is_local() const
+  {
+    return local;
+  }
 
 
 

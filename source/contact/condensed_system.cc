@@ -1,3 +1,4 @@
+#include <mbfem/base/parallel.h>
 #include <mbfem/contact/condensed_system.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -68,8 +69,12 @@ namespace mbfem
     block_flexibility.clear();
     pair_sides.assign(n_pairs, {});
     factorisation = Factorisation();
-    for (unsigned int b = 0; b < blocks.size(); ++b)
-      add_block(*blocks[b], b);
+    // Each rank computes its blocks' H_b, then they exchange them.
+    Parallel::together(MPI_COMM_WORLD, [&]() {
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        add_block(*blocks[b], b);
+    });
+    share_blocks();
     find_held_directions();
   }
 
@@ -103,6 +108,9 @@ namespace mbfem
     std::vector<std::vector<std::pair<unsigned int, double>>> rows(
       sides.size() * dim);
     BlockFlexibility flexibility;
+    flexibility.communicator = block.get_communicator();
+    flexibility.owner        = block.get_owner();
+    flexibility.local        = block.is_local();
     for (unsigned int s = 0; s < sides.size(); ++s)
       {
         const auto &[k, sign]       = sides[s];
@@ -125,16 +133,38 @@ namespace mbfem
          (flexibility_columns == Columns::automatic && dofs.size() >= 500)))
       {
         flexibility.on_demand = block.on_demand_flexibility(dofs);
-        flexibility.diagonal  = sampled_diagonal(*flexibility.on_demand, rows);
-        flexibility.rows      = std::move(rows);
+        flexibility.diagonal.assign(rows.size(), 0.);
+        if (flexibility.local)
+          flexibility.diagonal = sampled_diagonal(*flexibility.on_demand, rows);
+        flexibility.rows = std::move(rows);
         flexibility.columns.resize(flexibility.rows.size());
       }
-    else
+    else if (flexibility.local)
       {
         FullMatrix<double> c_block = block.flexibility(dofs);
         flexibility.matrix         = project(c_block, rows);
       }
+    else
+      flexibility.matrix.reinit(rows.size(), rows.size());
     block_flexibility.push_back(std::move(flexibility));
+  }
+
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::share_blocks()
+  {
+    for (auto &flexibility : block_flexibility)
+      if (flexibility.on_demand)
+        Parallel::broadcast(flexibility.communicator,
+                            flexibility.owner,
+                            flexibility.diagonal.data(),
+                            flexibility.diagonal.size());
+      else
+        Parallel::broadcast(flexibility.communicator,
+                            flexibility.owner,
+                            flexibility.matrix);
   }
 
 
@@ -248,14 +278,49 @@ namespace mbfem
           if (flexibility.on_demand && flexibility.columns[column].empty())
             missing[b].push_back(column);
         }
-    for (unsigned int b = 0; b < block_flexibility.size(); ++b)
-      if (!missing[b].empty())
-        {
-          std::sort(missing[b].begin(), missing[b].end());
-          missing[b].erase(std::unique(missing[b].begin(), missing[b].end()),
-                           missing[b].end());
+    for (auto &columns : missing)
+      {
+        std::sort(columns.begin(), columns.end());
+        columns.erase(std::unique(columns.begin(), columns.end()),
+                      columns.end());
+      }
+    if (std::all_of(missing.begin(), missing.end(), [](const auto &columns) {
+          return columns.empty();
+        }))
+      return; // the same on every rank
+    // Each rank computes its blocks' columns (and makes room for the
+    // others'), then they exchange them.
+    Parallel::together(MPI_COMM_WORLD, [&]() {
+      for (unsigned int b = 0; b < block_flexibility.size(); ++b)
+        if (missing[b].empty())
+          continue;
+        else if (block_flexibility[b].local)
           compute_columns(block_flexibility[b], missing[b]);
-        }
+        else
+          for (const unsigned int c : missing[b])
+            block_flexibility[b].columns[c].assign(
+              block_flexibility[b].rows.size(), 0.);
+    });
+    if (Parallel::n_ranks() > 1)
+      for (unsigned int b = 0; b < block_flexibility.size(); ++b)
+        share_columns(block_flexibility[b], missing[b]);
+  }
+
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::share_columns(
+    const BlockFlexibility          &flexibility,
+    const std::vector<unsigned int> &columns) const
+  {
+    // One message a column, into the room request_columns() made: no
+    // allocation here, where a failure would not reach the other ranks.
+    for (const unsigned int c : columns)
+      Parallel::broadcast(flexibility.communicator,
+                          flexibility.owner,
+                          flexibility.columns[c].data(),
+                          flexibility.columns[c].size());
   }
 
 
@@ -729,9 +794,11 @@ namespace mbfem
               const int column = column_of[flexibility.pairs[t] * dim + f];
               if (column < 0)
                 continue;
-              if (flexibility.on_demand &&
-                  flexibility.columns[t * dim + f].empty())
-                compute_columns(flexibility, {t * dim + f});
+              // request_columns() computed it (on the block's owner,
+              // which sent it to every rank).
+              Assert(!flexibility.on_demand ||
+                       !flexibility.columns[t * dim + f].empty(),
+                     ExcInternalError());
               add(column,
                   factor * flexibility(s * dim + e, t * dim + f) /
                     flexibility_scale);

@@ -1,3 +1,4 @@
+#include <mbfem/base/parallel.h>
 #include <mbfem/output/output.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -286,6 +287,12 @@ namespace mbfem
                             const unsigned int block_index,
                             const unsigned int step) const
   {
+    const std::string name = parameters.base_name + "-block" +
+                             Utilities::int_to_string(block_index, 2) + "-" +
+                             Utilities::int_to_string(step, 4) + ".vtu";
+    if (!block.is_local())
+      return name; // another rank writes it
+
     DataOut<dim> data_out;
     data_out.attach_dof_handler(block.get_dof_handler());
 
@@ -335,12 +342,9 @@ namespace mbfem
     flags.write_higher_order_cells = degree > 1;
     data_out.set_flags(flags);
 
-    const std::string name = parameters.base_name + "-block" +
-                             Utilities::int_to_string(block_index, 2) + "-" +
-                             Utilities::int_to_string(step, 4) + ".vtu";
     std::ostringstream content;
     data_out.write_vtu(content);
-    write_file_atomically(parameters.directory + "/" + name, content.str());
+    write_on_this_rank(parameters.directory + "/" + name, content.str());
     return name;
   }
 
@@ -379,6 +383,18 @@ namespace mbfem
   void
   write_file_atomically(const std::string &path, const std::string &content)
   {
+    // Every rank holds the results; rank 0 writes them, and a failure
+    // there ends the run on every rank.
+    Parallel::on_owner(MPI_COMM_WORLD, 0, [&]() {
+      write_on_this_rank(path, content);
+    });
+  }
+
+
+
+  void
+  write_on_this_rank(const std::string &path, const std::string &content)
+  {
     const std::string temporary = path + ".part";
     std::string       failure;
     {
@@ -415,6 +431,16 @@ namespace mbfem
 
   void
   create_output_directory(const std::string &directory)
+  {
+    Parallel::on_owner(MPI_COMM_WORLD, 0, [&]() {
+      create_directory_on_this_rank(directory);
+    });
+  }
+
+
+
+  void
+  create_directory_on_this_rank(const std::string &directory)
   {
     std::error_code ec;
     std::filesystem::create_directories(directory, ec);

@@ -19,15 +19,37 @@
 # REGEX (which also shows that the screen output is not held in a buffer).
 # '# setup: COMMAND' runs COMMAND (bash) in the working folder first, e.g. to
 # put /dev/full where mbfem will write (a full disk without a mount).
+# '# ranks: N' runs it as `mpirun -np N mbfem` and, unless it sends a signal,
+# also on one process, and requires the same exit code, the same stderr and
+# the same files (issue 30: rank 0 speaks for all ranks, and says what one
+# process says); with '# ranks-compare: message' only the same exit code and
+# stderr.
 # Usage: expect_failure.sh MBFEM INPUT.prm WORKDIR
 set -u
 mbfem=$1
 input=$2
-work=$3
+work=$(realpath -m "$3")
 
 run_input=$input
 alternative=$(sed -n 's/^# input: //p' "$input")
 [ -n "$alternative" ] && run_input=$(dirname "$input")/$alternative
+
+ranks=$(sed -n 's/^# ranks: *//p' "$input" | head -n 1)
+launch=()
+compare=
+if [ -n "$ranks" ]; then
+  launch=(mpirun -q -np "$ranks") # -q: without mpirun's own notice of a failed rank
+fi
+# The same input on one process, for the comparison at the end (not for a
+# signal, whose timing decides where the run ends).
+if [ -n "$ranks" ] && ! grep -q '^# signal-on: ' "$input"; then
+  compare=yes
+  serial_work=$work.serial
+  rm -rf "$serial_work" && mkdir -p "$serial_work" || exit 1
+  (cd "$serial_work" &&
+    { setup=$(sed -n 's/^# setup: //p' "$input"); [ -z "$setup" ] || bash -c "$setup"; } &&
+    "$mbfem" "$run_input" > stdout 2> stderr; echo $? > status)
+fi
 
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 setup=$(sed -n 's/^# setup: //p' "$input")
@@ -36,7 +58,7 @@ signal_on=$(sed -n 's/^# signal-on: //p' "$input")
 if [ -n "$signal_on" ]; then
   pattern=${signal_on% *}
   signal=${signal_on##* }
-  "$mbfem" "$run_input" > stdout 2> stderr &
+  "${launch[@]}" "$mbfem" "$run_input" > stdout 2> stderr &
   pid=$!
   for _ in $(seq 600); do
     grep -E -q -- "$pattern" stdout && break
@@ -47,7 +69,7 @@ if [ -n "$signal_on" ]; then
   wait $pid
   status=$?
 else
-  "$mbfem" "$run_input" > stdout 2> stderr
+  "${launch[@]}" "$mbfem" "$run_input" > stdout 2> stderr
   status=$?
 fi
 cat stdout stderr
@@ -108,5 +130,31 @@ while IFS= read -r pvd; do
     fi
   done < <(sed -n 's/.* file="\([^"]*\)".*/\1/p' "$pvd")
 done < <(find . -name '*.pvd')
+if [ -n "$compare" ]; then
+  if [ "$status" != "$(cat "$serial_work/status")" ]; then
+    echo "FAIL: exit code $status on $ranks ranks, $(cat "$serial_work/status") on one process"
+    failed=1
+  fi
+  if ! diff -u "$serial_work/stderr" stderr; then
+    echo "FAIL: the error message on $ranks ranks differs from one process's"
+    failed=1
+  fi
+fi
+# '# ranks-compare: message': the files may differ (another rank may have
+# written its blocks' files of the increment that failed).
+if [ -n "$compare" ] && ! grep -q '^# ranks-compare: message' "$input"; then
+  # The same files, with the same contents but for the summary's times.
+  if ! diff <(cd "$serial_work" && find . -type f ! -name 'std*' ! -name status | sort) \
+            <(find . -type f ! -name 'std*' | sort); then
+    echo "FAIL: the files on $ranks ranks differ from one process's"
+    failed=1
+  fi
+  while IFS= read -r file; do
+    if ! cmp -s "$serial_work/$file" "$file"; then
+      echo "FAIL: $file on $ranks ranks differs from one process's"
+      failed=1
+    fi
+  done < <(find . -type f ! -name 'std*' ! -name '*summary*')
+fi
 [ $failed -eq 0 ] && echo "PASS: exit code $status, message as expected"
 exit $failed

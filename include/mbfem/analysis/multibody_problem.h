@@ -53,6 +53,28 @@ namespace mbfem
     void
     make_blocks();
 
+    /**
+     * Under mpirun, the rank that factorises and solves each block,
+     * balanced by the blocks' cost() (Parallel::assign_owners()).
+     */
+    void
+    assign_block_owners();
+
+    /**
+     * Under mpirun, that every rank's contact iteration took the same
+     * states (it must: the same code on the same data); otherwise a clear
+     * error rather than ranks that wait for each other.
+     */
+    void
+    check_ranks_agree() const;
+
+    /**
+     * Under mpirun, each block's solution from its owner to every rank,
+     * after all ranks solved theirs (Block::share_solution()).
+     */
+    void
+    share_solutions();
+
     void
     setup_blocks();
 

@@ -93,6 +93,35 @@ namespace mbfem
     create_mesh(const MeshParameters &parameters);
 
     /**
+     * Puts the block on rank @p owner of @p comm (doc/parallel.md): only
+     * that rank assembles and factorises its stiffness and solves with it;
+     * on the others assemble_stiffness(), factorize() and solve() do
+     * nothing, and share_solution() brings the owner's displacement. The
+     * mesh, the DoFs, the constraints and the loads are on every rank.
+     * Before setup_system(); without it the block is this process's own.
+     */
+    void
+    set_owner(const MPI_Comm comm, const unsigned int owner);
+
+    /** Whether this rank owns the block (set_owner()). */
+    bool
+    is_local() const;
+
+    /** The ranks that share the block, and its owner among them. */
+    MPI_Comm
+    get_communicator() const;
+
+    unsigned int
+    get_owner() const;
+
+    /**
+     * The work of factorising the block, for balancing blocks over ranks:
+     * cells times DoFs per cell, known once the mesh is.
+     */
+    double
+    cost() const;
+
+    /**
      * Distributes DoFs on the mesh (from extract_mesh() or create_mesh()),
      * builds the constraints, finds the free rigid-body modes and pins
      * them.
@@ -187,6 +216,13 @@ namespace mbfem
      */
     void
     solve(const std::vector<double> &alpha = {});
+
+    /**
+     * The owner's solution on every rank of the block's communicator
+     * (set_owner()), after solve() on all of them: every rank calls it.
+     */
+    void
+    share_solution();
 
     /**
      * Replaces the solution by @p displacement (n_dofs() values, its
@@ -358,6 +394,11 @@ namespace mbfem
     const MappingQ<dim>      mapping;
     DoFHandler<dim>          dof_handler;
     Vector<double>           solution;
+
+    /** The ranks that share the block, and the one that owns it. */
+    MPI_Comm     communicator = MPI_COMM_SELF;
+    unsigned int owner        = 0;
+    bool         local        = true;
 
     /**
      * Cell stiffness from @p fe_values (already reinit'ed on the cell);

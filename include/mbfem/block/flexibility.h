@@ -1,6 +1,7 @@
 #ifndef mbfem_block_flexibility_h
 #define mbfem_block_flexibility_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -56,13 +57,25 @@ namespace mbfem
   class ContactFlexibility
   {
   public:
-    /** Factorises @p stiffness; arguments as contact_flexibility(). */
+    /**
+     * Factorises @p stiffness; arguments as contact_flexibility(). With
+     * @p comm of several ranks, only rank @p owner holds the factorisation
+     * (the others may pass an empty matrix), and only there may forms()
+     * and columns() be called (CondensedSystem broadcasts what they
+     * return).
+     */
     ContactFlexibility(const TrilinosWrappers::SparseMatrix       &stiffness,
                        const AffineConstraints<double>            &constraints,
                        const std::vector<types::global_dof_index> &dofs,
-                       const bool positive_definite = true);
+                       const bool         positive_definite = true,
+                       const MPI_Comm     comm              = MPI_COMM_SELF,
+                       const unsigned int owner             = 0);
 
     ~ContactFlexibility();
+
+    /** Whether this rank holds the factorisation. */
+    bool
+    is_local() const;
 
     /** The contact DoFs, as given. */
     unsigned int
@@ -95,6 +108,7 @@ namespace mbfem
     std::vector<unsigned int>                                 master_dofs;
     std::vector<std::vector<std::pair<unsigned int, double>>> weights;
     std::unique_ptr<MumpsSolver>                              solver;
+    bool                                                      local;
   };
 } // namespace mbfem
 

@@ -139,6 +139,13 @@ namespace mbfem
     {
       /** The pair of each side on this block (a side per row group). */
       std::vector<unsigned int> pairs;
+      /**
+       * The block's ranks, and the one that computes H_b and its columns
+       * (Block::set_owner()): the others receive them.
+       */
+      MPI_Comm     communicator = MPI_COMM_SELF;
+      unsigned int owner        = 0;
+      bool         local        = true;
       /** H_b whole, or empty where it is computed on demand. */
       FullMatrix<double> matrix;
 
@@ -204,9 +211,27 @@ namespace mbfem
     compute_columns(const BlockFlexibility          &flexibility,
                     const std::vector<unsigned int> &columns) const;
 
-    /** setup(), per block: the pair sides on @p block (number @p b), H_b. */
+    /**
+     * Under mpirun, H_b's columns @p columns (computed by compute_columns()
+     * on the block's owner) from there to every rank.
+     */
+    void
+    share_columns(const BlockFlexibility          &flexibility,
+                  const std::vector<unsigned int> &columns) const;
+
+    /**
+     * setup(), per block: the pair sides on @p block (number @p b), and
+     * H_b (or its diagonal on demand) where this rank owns the block.
+     */
     void
     add_block(const Block<dim> &block, const unsigned int b);
+
+    /**
+     * setup(), under mpirun: H_b (or its diagonal on demand) from each
+     * block's owner to every rank, once all ranks have computed theirs.
+     */
+    void
+    share_blocks();
 
     /**
      * H_b's diagonal on demand, for scale() and the held directions:

@@ -116,6 +116,9 @@ namespace mbfem
      * Writes @p block at @p step; high-order cells (degree > 1) are written
      * as VTK Lagrange cells so ParaView shows them curved and not
      * subdivided. Returns the file name (relative to the directory).
+     * Under mpirun only the block's owner writes it, every rank returns
+     * the name: call it inside Parallel::together(), so that an error on
+     * one rank ends all.
      */
     template <int dim>
     std::string
@@ -139,10 +142,15 @@ namespace mbfem
   /**
    * Writes @p content to @p path via a temporary file and a rename; on any
    * failure (a full disk, a folder that went away) the temporary file is
-   * removed and the message names the file and the reason.
+   * removed and the message names the file and the reason. Under mpirun
+   * rank 0 writes, and its failure ends the run on every rank.
    */
   void
   write_file_atomically(const std::string &path, const std::string &content);
+
+  /** write_file_atomically() on this rank alone. */
+  void
+  write_on_this_rank(const std::string &path, const std::string &content);
 
   /**
    * Creates 'Output/Directory' (@p directory) if missing, or an error that
@@ -150,6 +158,10 @@ namespace mbfem
    */
   void
   create_output_directory(const std::string &directory);
+
+  /** create_output_directory() on this rank alone. */
+  void
+  create_directory_on_this_rank(const std::string &directory);
 } // namespace mbfem
 
 #endif
