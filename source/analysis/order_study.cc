@@ -1,10 +1,12 @@
 #include <mbfem/analysis/block_measures.h>
 #include <mbfem/analysis/order_study.h>
+#include <mbfem/base/parallel.h>
 #include <mbfem/base/parameters.h>
 #include <mbfem/base/text_input.h>
 
 #include <deal.II/base/timer.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -262,6 +264,73 @@ namespace mbfem
 
 
   template <int dim>
+  std::vector<OrderStudyRow>
+  OrderStudy<dim>::solve_all(const Timer &timer) const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> cases;
+    for (const auto p : parameters.order_study.degrees)
+      for (const auto r : parameters.order_study.refinements)
+        cases.emplace_back(p, r);
+
+    // Under mpirun the cases are independent: each rank solves its share
+    // (balanced by cells x DoFs per cell, 2^(dim r) (p + 1)^dim), and the
+    // rows go from the rank that computed each to all.
+    const unsigned int  n_ranks = Parallel::n_ranks();
+    std::vector<double> costs;
+    for (const auto &[p, r] : cases)
+      costs.push_back(std::pow(2., dim * r) * std::pow(p + 1., dim));
+    const std::vector<unsigned int> owners =
+      Parallel::assign_owners(costs, n_ranks);
+    const unsigned int rank =
+      n_ranks > 1 ? Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) : 0;
+
+    std::vector<OrderStudyRow> rows(cases.size(), OrderStudyRow());
+    Parallel::together(MPI_COMM_WORLD, [&]() {
+      for (unsigned int i = 0; i < cases.size(); ++i)
+        if (owners[i] == rank)
+          {
+            const auto &[p, r] = cases[i];
+            rows[i]            = solve_one(p, r);
+            if (!parameters.run.test_mode && n_ranks == 1)
+              pcout << "  p = " << p << ", level " << r << ": "
+                    << rows[i].n_dofs << " DoFs, " << timer.wall_time()
+                    << " s so far" << std::endl;
+          }
+    });
+    if (n_ranks > 1)
+      {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        for (unsigned int i = 0; i < cases.size(); ++i)
+          {
+            std::array<double, 6> values = {{double(rows[i].degree),
+                                             double(rows[i].refinement),
+                                             double(rows[i].n_cells),
+                                             double(rows[i].n_dofs),
+                                             rows[i].displacement_error,
+                                             rows[i].stress_error}};
+            Parallel::broadcast(MPI_COMM_WORLD,
+                                owners[i],
+                                values.data(),
+                                values.size());
+            rows[i] = {static_cast<unsigned int>(values[0]),
+                       static_cast<unsigned int>(values[1]),
+                       static_cast<unsigned int>(values[2]),
+                       static_cast<unsigned int>(values[3]),
+                       values[4],
+                       values[5],
+                       nan, // compute_rates() sets them
+                       nan};
+          }
+        if (!parameters.run.test_mode)
+          pcout << "  " << cases.size() << " cases on " << n_ranks
+                << " MPI ranks: " << timer.wall_time() << " s" << std::endl;
+      }
+    return rows;
+  }
+
+
+
+  template <int dim>
   void
   OrderStudy<dim>::run()
   {
@@ -275,16 +344,7 @@ namespace mbfem
     pcout << std::endl;
 
     Timer                      timer;
-    std::vector<OrderStudyRow> rows;
-    for (const auto p : parameters.order_study.degrees)
-      for (const auto r : parameters.order_study.refinements)
-        {
-          rows.push_back(solve_one(p, r));
-          if (!parameters.run.test_mode)
-            pcout << "  p = " << p << ", level " << r << ": "
-                  << rows.back().n_dofs << " DoFs, " << timer.wall_time()
-                  << " s so far" << std::endl;
-        }
+    std::vector<OrderStudyRow> rows = solve_all(timer);
     compute_rates(rows, parameters.order_study.round_off_floor);
     print_table(rows);
     write_csv(rows);

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <string>
 #include <vector>
@@ -74,6 +75,14 @@ namespace mbfem
   private:
     OrderStudyRow
     solve_one(const unsigned int degree, const unsigned int refinement) const;
+
+    /**
+     * solve_one() for every degree and level, in the table's order; under
+     * mpirun each rank solves a share of them and the rows are exchanged
+     * (doc/parallel.md).
+     */
+    std::vector<OrderStudyRow>
+    solve_all(const Timer &timer) const;
 
     void
     print_table(const std::vector<OrderStudyRow> &rows) const;
