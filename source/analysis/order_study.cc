@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <limits>
 #include <sstream>
@@ -285,18 +286,34 @@ namespace mbfem
       n_ranks > 1 ? Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) : 0;
 
     std::vector<OrderStudyRow> rows(cases.size(), OrderStudyRow());
-    Parallel::together(MPI_COMM_WORLD, [&]() {
-      for (unsigned int i = 0; i < cases.size(); ++i)
-        if (owners[i] == rank)
-          {
-            const auto &[p, r] = cases[i];
-            rows[i]            = solve_one(p, r);
-            if (!parameters.run.test_mode && n_ranks == 1)
-              pcout << "  p = " << p << ", level " << r << ": "
-                    << rows[i].n_dofs << " DoFs, " << timer.wall_time()
-                    << " s so far" << std::endl;
-          }
-    });
+    // A failure ends the study with the message of the first case that
+    // failed, in the table's order, as on one process.
+    unsigned int       first_failure = cases.size();
+    std::exception_ptr failure;
+    for (unsigned int i = 0; i < cases.size(); ++i)
+      if (owners[i] == rank)
+        {
+          const auto &[p, r] = cases[i];
+          try
+            {
+              rows[i] = solve_one(p, r);
+            }
+          catch (...)
+            {
+              first_failure = i;
+              failure       = std::current_exception();
+              break;
+            }
+          if (!parameters.run.test_mode && n_ranks == 1)
+            pcout << "  p = " << p << ", level " << r << ": " << rows[i].n_dofs
+                  << " DoFs, " << timer.wall_time() << " s so far" << std::endl;
+        }
+    if (n_ranks > 1)
+      first_failure = Utilities::MPI::min(first_failure, MPI_COMM_WORLD);
+    if (first_failure < cases.size())
+      Parallel::on_owner(MPI_COMM_WORLD, owners[first_failure], [&]() {
+        std::rethrow_exception(failure);
+      });
     if (n_ranks > 1)
       {
         const double nan = std::numeric_limits<double>::quiet_NaN();
