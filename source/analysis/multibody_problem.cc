@@ -893,14 +893,14 @@ namespace mbfem
   {
     if (Parallel::n_ranks() == 1)
       return;
-    // FNV-1a over the pairs' states and broken flags.
-    unsigned long long hash = 14695981039346656037ull;
+    std::vector<unsigned long long> states;
     for (unsigned int k = 0; k < contact->pairs().size(); ++k)
-      for (const unsigned int value :
-           {static_cast<unsigned int>(contact->state(k)),
-            static_cast<unsigned int>(contact->broken(k))})
-        hash = (hash ^ value) * 1099511628211ull;
-    Parallel::check_same_on_all_ranks(hash, "the states of the contact pairs");
+      {
+        states.push_back(static_cast<unsigned int>(contact->state(k)));
+        states.push_back(contact->broken(k));
+      }
+    Parallel::check_same_on_all_ranks(states,
+                                      "the states of the contact pairs");
   }
 
 

@@ -43,15 +43,6 @@ namespace mbfem
 
 
 
-    bool
-    is_root()
-    {
-      return !running() ||
-             Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    }
-
-
-
     std::vector<unsigned int>
     assign_owners(const std::vector<double> &costs, const unsigned int n_ranks)
     {
@@ -125,10 +116,10 @@ namespace mbfem
           caught = std::current_exception();
         }
       // The lowest rank that failed speaks for all.
-      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      const unsigned int size = Utilities::MPI::n_mpi_processes(comm);
       const unsigned int first =
-        Utilities::MPI::min(failure == none ? n_ranks : rank, comm);
-      if (first == n_ranks)
+        Utilities::MPI::min(failure == none ? size : rank, comm);
+      if (first == size)
         return;
       MPI_Bcast(&failure, 1, MPI_INT, first, comm);
       // Without the end of line that print_info() left: the exception
@@ -201,27 +192,15 @@ namespace mbfem
 
 
     void
-    broadcast(const MPI_Comm       comm,
-              const unsigned int   owner,
-              std::vector<double> &values)
-    {
-      if (!running() || Utilities::MPI::n_mpi_processes(comm) == 1)
-        return;
-      unsigned long long n = values.size();
-      MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, owner, comm);
-      values.resize(n);
-      broadcast(comm, owner, values.data(), n);
-    }
-
-
-
-    void
-    check_same_on_all_ranks(const unsigned long long value,
-                            const std::string       &what)
+    check_same_on_all_ranks(const std::vector<unsigned long long> &values,
+                            const std::string                     &what)
     {
       if (n_ranks() == 1)
         return;
-      unsigned long long low = value, high = value;
+      unsigned long long hash = 14695981039346656037ull; // FNV-1a
+      for (const unsigned long long value : values)
+        hash = (hash ^ value) * 1099511628211ull;
+      unsigned long long low = hash, high = hash;
       MPI_Allreduce(
         MPI_IN_PLACE, &low, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, MPI_COMM_WORLD);
       MPI_Allreduce(MPI_IN_PLACE,

@@ -288,13 +288,15 @@ namespace mbfem
       {
         // Ranks whose iterations took different states would ask for
         // different columns and wait for each other below: an error
-        // instead (FNV-1a over the requests).
-        unsigned long long hash = 14695981039346656037ull;
-        for (unsigned int b = 0; b < missing.size(); ++b)
-          for (const unsigned int c : missing[b])
-            hash = (hash ^ (b * 1000003ull + c)) * 1099511628211ull;
+        // instead.
+        std::vector<unsigned long long> requests;
+        for (const auto &columns : missing)
+          {
+            requests.push_back(columns.size());
+            requests.insert(requests.end(), columns.begin(), columns.end());
+          }
         Parallel::check_same_on_all_ranks(
-          hash, "the flexibility columns their contact iterations ask for");
+          requests, "the flexibility columns their contact iterations ask for");
       }
     if (std::all_of(missing.begin(), missing.end(), [](const auto &columns) {
           return columns.empty();

@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace mbfem
@@ -25,13 +26,6 @@ namespace mbfem
     /** The number of ranks of MPI_COMM_WORLD; 1 before MPI_Init. */
     unsigned int
     n_ranks();
-
-    /**
-     * Whether this process is rank 0 of MPI_COMM_WORLD (or MPI is not
-     * initialised): the rank that prints and writes files.
-     */
-    bool
-    is_root();
 
     /**
      * The owner rank of each block, balanced by @p costs (one per block)
@@ -77,21 +71,14 @@ namespace mbfem
               const unsigned int  owner,
               FullMatrix<double> &values);
 
-    /** As above; the size too comes from @p owner. */
-    void
-    broadcast(const MPI_Comm       comm,
-              const unsigned int   owner,
-              std::vector<double> &values);
-
     /**
-     * Throws ExcInternalError's kind of message unless @p value is the same
-     * on every rank of MPI_COMM_WORLD: the check that the ranks' contact
-     * iterations, fed the same data, took the same states (@p what names
-     * the value).
+     * Throws unless @p values (a hash of them) are the same on every rank
+     * of MPI_COMM_WORLD: the check that the ranks' contact iterations, fed
+     * the same data, took the same states (@p what names the values).
      */
     void
-    check_same_on_all_ranks(const unsigned long long value,
-                            const std::string       &what);
+    check_same_on_all_ranks(const std::vector<unsigned long long> &values,
+                            const std::string                     &what);
   } // namespace Parallel
 } // namespace mbfem
 
