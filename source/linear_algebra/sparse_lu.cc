@@ -126,19 +126,23 @@ namespace mbfem
         return false;
       }
     check(status, "numeric factorisation");
+    factor_flops   = info[UMFPACK_FLOPS];
+    factor_entries = info[UMFPACK_LNZ] + info[UMFPACK_UNZ];
     return true;
   }
 
 
 
   void
-  SparseLU::solve(Vector<double> &x) const
+  SparseLU::solve(Vector<double> &x, const bool refine) const
   {
     Assert(numeric != nullptr, ExcMessage("SparseLU: nothing factorised."));
     Assert(x.size() + 1 == column_start.size(),
            ExcDimensionMismatch(x.size(), column_start.size() - 1));
-    const Vector<double>             b = x;
-    const auto                       c = control();
+    const Vector<double> b = x;
+    auto                 c = control();
+    if (!refine)
+      c[UMFPACK_IRSTEP] = 0;
     std::array<double, UMFPACK_INFO> info;
     // The factors are of A^T: UMFPACK_Aat solves (A^T)^T x = A x = b.
     check(umfpack_dl_solve(UMFPACK_Aat,
@@ -151,6 +155,14 @@ namespace mbfem
                            c.data(),
                            info.data()),
           "solve");
+  }
+
+
+
+  double
+  SparseLU::substitutions_per_factorization() const
+  {
+    return factor_entries > 0. ? factor_flops / (4. * factor_entries) : 0.;
   }
 
 

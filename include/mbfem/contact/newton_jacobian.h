@@ -7,6 +7,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -71,10 +72,18 @@ namespace mbfem
 
     /**
      * Solves J x = b in place (b in, x out). False where J is singular
-     * (UMFPACK's zero pivot) or x is not finite.
+     * (UMFPACK's zero pivot) or x is not finite. GMRES preconditioned by
+     * the factors of an earlier J solves it first, where it converges
+     * within a budget cheaper than a new factorisation (the Jacobians of
+     * successive Newton steps, and of the solves after a joint breaks,
+     * differ in few rows); else J is factorised.
      */
     bool
     solve(Vector<double> &b);
+
+    /** How many solves used a new LU, and how many the old one with GMRES. */
+    std::pair<unsigned int, unsigned int>
+    solve_counts() const;
 
     /**
      * Levenberg and Marquardt's step: (J^T J + lambda diag(J^T J)) x =
@@ -92,6 +101,41 @@ namespace mbfem
     /** J's factors; their ordering serves every J of the pattern. */
     SparseLU     lu;
     unsigned int n_rows_of_a = 0;
+    /**
+     * A hash of each row of the J that lu holds the factors of (empty:
+     * none), to count the rows changed since without a copy of J (on the
+     * 1013-block wall a copy was 0.65 GB).
+     */
+    std::vector<std::uint64_t> factored_rows;
+    /** Whether the next solve() factorises without trying GMRES first. */
+    bool         refactorize_next = false;
+    unsigned int n_factorized = 0, n_gmres = 0;
+
+    /** GMRES's iterations that cost less than about half a factorisation. */
+    unsigned int
+    gmres_budget() const;
+
+    /** Each row's hash of J's values. */
+    std::vector<std::uint64_t>
+    row_hashes() const;
+
+    /** The number of rows in which J differs from the J factorised. */
+    unsigned int
+    n_changed_rows() const;
+
+    /**
+     * J x = b by GMRES, right-preconditioned by the factors of the last J
+     * factorised (J_0): J J_0^{-1} is the identity plus a matrix of rank
+     * at most @p n_changed (the rows changed), so GMRES converges within
+     * n_changed + 1 iterations in exact arithmetic, each iteration a
+     * forward and a backward substitution. Returns its iterations, or
+     * @p budget + 1 (b unchanged) where it did not reach
+     * |J x - b| <= 1e-12 |b| within @p budget.
+     */
+    unsigned int
+    solve_with_old_lu(Vector<double>    &b,
+                      const unsigned int budget,
+                      const unsigned int n_changed) const;
     /**
      * The Levenberg-Marquardt system [I J; J^T -lambda D], its pattern
      * built at its first use after reinit(), and its factors.

@@ -134,10 +134,11 @@ namespace mbfem
                    unsigned int         &iterations) const;
 
     /**
-     * solve_system()'s step: Newton's direction from the Jacobian (which
-     * it factorises), cut to @p trust, with backtracking; false if the
-     * Jacobian is singular (then @p singular) or no length decreases
-     * 1/2 |F|^2.
+     * solve_system()'s step: Newton's direction from the Jacobian, cut
+     * to @p trust, with backtracking (down to internal::min_step where it
+     * was cut); false if
+     * no length decreases 1/2 |F|^2, with @p singular where the Jacobian
+     * is singular or its step had to be cut (singular but for rounding).
      */
     bool
     line_search(System      &system,

@@ -48,9 +48,22 @@ namespace mbfem
     factorize(const SparseMatrix<double> &matrix,
               const bool                  drop_zeros = false);
 
-    /** x = A^{-1} x, in place, with the last factorisation. */
+    /**
+     * x = A^{-1} x, in place, with the last factorisation; with @p refine
+     * UMFPACK's iterative refinement (its default, up to two steps, each
+     * a product with A and another substitution) improves it, which a
+     * preconditioner does not need.
+     */
     void
-    solve(Vector<double> &x) const;
+    solve(Vector<double> &x, const bool refine = true) const;
+
+    /**
+     * The last factorisation's flops over those of a substitution with its
+     * factors (four per entry of L and U: a forward and a backward sweep,
+     * a multiplication and an addition each).
+     */
+    double
+    substitutions_per_factorization() const;
 
     /** How often factorize() reused the symbolic analysis, and made one. */
     std::pair<unsigned int, unsigned int>
@@ -70,6 +83,8 @@ namespace mbfem
     void               *symbolic = nullptr;
     void               *numeric  = nullptr;
     unsigned int        reused = 0, analysed = 0;
+    /** UMFPACK's flops and entries of L and U of the last factorisation. */
+    double factor_flops = 0., factor_entries = 0.;
   };
 } // namespace mbfem
 
