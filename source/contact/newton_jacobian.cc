@@ -132,24 +132,38 @@ namespace mbfem
   bool
   NewtonJacobian::solve(Vector<double> &b)
   {
-    // GMRES converges as fast as a change of that many rows allows only
-    // where the changes are small: where far more rows changed than the
-    // budget has iterations (3D slip directions turn in every slipping
-    // pair's rows; on cube_5x5x5 760 to 1800 rows, GMRES failing in 9 of
-    // 11 tries), the factorisation comes at once.
-    const bool         have_factors = !factored_rows.empty();
-    const unsigned int budget       = have_factors ? gmres_budget() : 0;
-    const unsigned int n_changed    = have_factors ? n_changed_rows() : 0;
-    if (budget > 0 && !refactorize_next && n_changed <= 4 * budget)
+    if (!all_finite(b))
+      return false; // no solver makes a finite step of it
+    // One pass over J: the rows changed since the factorisation, and the
+    // hashes that a new one keeps.
+    const std::vector<std::uint64_t> hashes = row_hashes();
+    if (!factored_rows.empty())
       {
-        const unsigned int used = solve_with_old_lu(b, budget, n_changed);
-        if (used <= budget)
+        const unsigned int n_changed = count_changed(hashes);
+        if (n_changed == 0)
           {
+            // The J factorised: its factors, as a new LU would give them.
             ++n_gmres;
-            // Past half its budget GMRES will soon need more: the next
-            // solve factorises instead of trying it first.
-            refactorize_next = (2 * used > budget);
+            lu.solve(b);
             return all_finite(b);
+          }
+        // GMRES converges as fast as a change of that many rows allows
+        // only where the changes are small: where far more rows changed
+        // than the budget has iterations (3D slip directions turn in
+        // every slipping pair's rows; on cube_5x5x5 760 to 1800 rows,
+        // GMRES failing in 9 of 11 tries), the factorisation comes at once.
+        const unsigned int budget = gmres_budget();
+        if (budget > 0 && !refactorize_next && n_changed <= 4 * budget)
+          {
+            const unsigned int used = solve_with_old_lu(b, budget, n_changed);
+            if (used <= budget)
+              {
+                ++n_gmres;
+                // Past half its budget GMRES will soon need more: the next
+                // solve factorises instead of trying it first.
+                refactorize_next = (2 * used > budget);
+                return all_finite(b);
+              }
           }
       }
     refactorize_next = false;
@@ -166,12 +180,11 @@ namespace mbfem
     const bool drop_zeros =
       zeros > internal::zero_fraction * jacobian.n_nonzero_elements();
     ++n_factorized;
-    factored_rows = row_hashes();
+    // No factors to reuse until this factorisation has succeeded.
+    factored_rows.clear();
     if (!lu.factorize(jacobian, drop_zeros))
-      {
-        factored_rows.clear(); // no factors to reuse
-        return false;          // a zero pivot
-      }
+      return false; // a zero pivot
+    factored_rows = hashes;
     lu.solve(b);
     return all_finite(b);
   }
@@ -190,12 +203,15 @@ namespace mbfem
   NewtonJacobian::gmres_budget() const
   {
     // A substitution costs more time per flop than a factorisation
-    // (memory against dense kernels): on the jointed slope's Jacobian 111
-    // substitutions' flops, 45 substitutions' time. A fifth of the flop
-    // ratio keeps a try within about half a factorisation.
+    // (memory against dense kernels): on the jointed slope's Jacobian a
+    // factorisation is 222 substitutions' flops but 45 substitutions'
+    // time. A tenth of the flop ratio keeps a try within about half a
+    // factorisation.
     const double ratio = lu.substitutions_per_factorization();
+    if (!(ratio > 0.))
+      return 0;
     return static_cast<unsigned int>(
-      std::min(ratio / 5., double(internal::max_gmres_iterations)));
+      std::min(ratio / 10., double(internal::max_gmres_iterations)));
   }
 
 
@@ -203,9 +219,10 @@ namespace mbfem
   std::vector<std::uint64_t>
   NewtonJacobian::row_hashes() const
   {
-    // FNV-1a over each row's values: a row whose hash is unchanged has
-    // (but for a collision, which costs GMRES iterations, not accuracy)
-    // the values it had.
+    // Each value's bits mixed into its row's hash (FNV-1a's constants,
+    // a word at a time): a row whose hash is unchanged has (but for a
+    // collision, which costs GMRES iterations, not accuracy) the values
+    // it had.
     std::vector<std::uint64_t> hashes(jacobian.m());
     for (unsigned int i = 0; i < jacobian.m(); ++i)
       {
@@ -213,10 +230,9 @@ namespace mbfem
         for (auto entry = jacobian.begin(i); entry != jacobian.end(i); ++entry)
           {
             const double  value = entry->value();
-            unsigned char bytes[sizeof(double)];
-            std::memcpy(bytes, &value, sizeof(double));
-            for (const unsigned char byte : bytes)
-              hash = (hash ^ byte) * 1099511628211ull;
+            std::uint64_t bits;
+            std::memcpy(&bits, &value, sizeof(double));
+            hash = (hash ^ bits) * 1099511628211ull;
           }
         hashes[i] = hash;
       }
@@ -226,10 +242,9 @@ namespace mbfem
 
 
   unsigned int
-  NewtonJacobian::n_changed_rows() const
+  NewtonJacobian::count_changed(const std::vector<std::uint64_t> &hashes) const
   {
-    const std::vector<std::uint64_t> hashes    = row_hashes();
-    unsigned int                     n_changed = 0;
+    unsigned int n_changed = 0;
     for (unsigned int i = 0; i < hashes.size(); ++i)
       n_changed += (hashes[i] != factored_rows[i]);
     return n_changed;
@@ -270,9 +285,10 @@ namespace mbfem
     const double       norm   = b.l2_norm();
     if (norm == 0.)
       return 0; // x = 0 = b
-    // Rank n_changed: GMRES ends within n_changed + 1 iterations, without
-    // a restart (its basis holds them all).
-    const unsigned int max_iterations = std::min(budget, n_changed + 1);
+    // Rank n_changed: GMRES ends within n_changed + 1 iterations in exact
+    // arithmetic; two more for the rounding of substitutions without
+    // refinement. No restart: its basis holds them all.
+    const unsigned int max_iterations = std::min(budget, n_changed + 3);
     SolverControl      control(max_iterations,
                           internal::gmres_tolerance * norm,
                           false,
@@ -289,8 +305,8 @@ namespace mbfem
       {
         return failed;
       }
-    // The true residual, which right preconditioning's estimate is in
-    // exact arithmetic only.
+    // The true residual, which GMRES's estimate is in exact arithmetic
+    // only, within ten times the tolerance.
     Vector<double> residual(b.size());
     jacobian.vmult(residual, x);
     residual -= b;

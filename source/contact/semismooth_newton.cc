@@ -36,15 +36,22 @@ namespace mbfem
     /** Step halvings of the line search before a step is taken anyway. */
     constexpr unsigned int max_halvings = 30;
     /**
-     * The shortest step the line search takes, as a fraction of Newton's
-     * full step, where that step had to be cut to the trust length
-     * (a Jacobian singular but for rounding); shorter ones decrease the
-     * merit by less than this. The jointed slope's increment 3 took 30
-     * such steps in a row that left it the same to six digits (t times
-     * cut down to 1e-18); now the springs take over at once. Uncut steps
-     * halve down to max_halvings as before: on the 1013-block wall,
-     * sending those to Levenberg and Marquardt's step instead cost 64 s
-     * of augmented LUs (34,016 unknowns) in one step.
+     * A Newton step cut to less than this fraction of its length by the
+     * trust length (so longer than 1e6 times the data or the iterate)
+     * comes from a Jacobian singular but for rounding: the line search
+     * takes it down to min_step only, and its failure counts as a
+     * singular Jacobian (solve_system() then hands over to the springs
+     * where they follow, else to Levenberg and Marquardt's step).
+     */
+    constexpr double singular_cut = 1e-3;
+    /**
+     * The shortest such step the line search takes, as a fraction of
+     * Newton's full step. The jointed slope's increment 3 took 30 of them
+     * in a row that left the merit the same to six digits (t times the
+     * cut down to 1e-18). Other steps halve down to max_halvings as
+     * before: on the 1013-block wall, sending those to Levenberg and
+     * Marquardt's step instead cost 64 s of augmented LUs (34,016
+     * unknowns) in one step.
      */
     constexpr double min_step = 1e-6;
     /** A Newton step is cut to this times the larger of |u| and the data. */
@@ -470,10 +477,11 @@ namespace mbfem
     const double cut = std::min(1., trust / step.linfty_norm());
     step *= cut;
 
-    const Vector<double> start = system.u;
-    double               t     = 1.;
+    const Vector<double> start         = system.u;
+    double               t             = 1.;
+    const bool           near_singular = cut < internal::singular_cut;
     for (unsigned int h = 0; h <= internal::max_halvings &&
-                             (cut == 1. || t * cut >= internal::min_step);
+                             (!near_singular || t * cut >= internal::min_step);
          ++h, t *= 0.5)
       {
         system.u = start;
@@ -484,10 +492,10 @@ namespace mbfem
     // Back to the start, with its residual (the fallback step needs it).
     system.u = start;
     evaluate(system);
-    // A step longer than the trust length that decreases nothing: the
+    // A step far beyond the trust length that decreases nothing: the
     // Jacobian is singular in all but rounding, which the springs mend
     // as they do an exactly singular one.
-    singular = (cut < 1.);
+    singular = near_singular;
     return false;
   }
 

@@ -162,7 +162,7 @@ namespace mbfem
   double
   SparseLU::substitutions_per_factorization() const
   {
-    return factor_entries > 0. ? factor_flops / (4. * factor_entries) : 0.;
+    return factor_entries > 0. ? factor_flops / (2. * factor_entries) : 0.;
   }
 
 

@@ -72,11 +72,13 @@ namespace mbfem
 
     /**
      * Solves J x = b in place (b in, x out). False where J is singular
-     * (UMFPACK's zero pivot) or x is not finite. GMRES preconditioned by
-     * the factors of an earlier J solves it first, where it converges
+     * (UMFPACK's zero pivot) or b or x is not finite. GMRES preconditioned
+     * by the factors of an earlier J solves it first, where it converges
      * within a budget cheaper than a new factorisation (the Jacobians of
      * successive Newton steps, and of the solves after a joint breaks,
-     * differ in few rows); else J is factorised.
+     * differ in few rows); else J is factorised. On that route a singular
+     * J whose range holds b can give a solution (true): GMRES does not
+     * test singularity.
      */
     bool
     solve(Vector<double> &b);
@@ -119,9 +121,9 @@ namespace mbfem
     std::vector<std::uint64_t>
     row_hashes() const;
 
-    /** The number of rows in which J differs from the J factorised. */
+    /** The number of rows whose @p hashes differ from the J factorised. */
     unsigned int
-    n_changed_rows() const;
+    count_changed(const std::vector<std::uint64_t> &hashes) const;
 
     /**
      * J x = b by GMRES, right-preconditioned by the factors of the last J
@@ -129,8 +131,9 @@ namespace mbfem
      * at most @p n_changed (the rows changed), so GMRES converges within
      * n_changed + 1 iterations in exact arithmetic, each iteration a
      * forward and a backward substitution. Returns its iterations, or
-     * @p budget + 1 (b unchanged) where it did not reach
-     * |J x - b| <= 1e-12 |b| within @p budget.
+     * @p budget + 1 (b unchanged) where it did not reach GMRES's
+     * |J x - b| <= 1e-12 |b| within @p budget, or the true residual
+     * is above ten times that.
      */
     unsigned int
     solve_with_old_lu(Vector<double>    &b,

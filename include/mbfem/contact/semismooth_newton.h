@@ -135,10 +135,10 @@ namespace mbfem
 
     /**
      * solve_system()'s step: Newton's direction from the Jacobian, cut
-     * to @p trust, with backtracking (down to internal::min_step where it
-     * was cut); false if
-     * no length decreases 1/2 |F|^2, with @p singular where the Jacobian
-     * is singular or its step had to be cut (singular but for rounding).
+     * to @p trust, with backtracking (only down to internal::min_step
+     * where it was cut below internal::singular_cut); false if no length
+     * decreases 1/2 |F|^2, with @p singular where the Jacobian is
+     * singular or its step was cut that much (singular but for rounding).
      */
     bool
     line_search(System      &system,

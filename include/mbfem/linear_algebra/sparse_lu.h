@@ -59,8 +59,9 @@ namespace mbfem
 
     /**
      * The last factorisation's flops over those of a substitution with its
-     * factors (four per entry of L and U: a forward and a backward sweep,
-     * a multiplication and an addition each).
+     * factors (two per entry of L and U, a multiplication and an addition:
+     * L's in the forward sweep, U's in the backward one; UMFPACK's own
+     * count of a solve's flops agrees).
      */
     double
     substitutions_per_factorization() const;
