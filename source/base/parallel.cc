@@ -1,4 +1,5 @@
 #include <mbfem/base/exceptions.h>
+#include <mbfem/base/hash.h>
 #include <mbfem/base/parallel.h>
 
 #include <algorithm>
@@ -197,9 +198,9 @@ namespace mbfem
     {
       if (n_ranks() == 1)
         return;
-      unsigned long long hash = 14695981039346656037ull; // FNV-1a
+      std::uint64_t hash = Hash::start;
       for (const unsigned long long value : values)
-        hash = (hash ^ value) * 1099511628211ull;
+        hash = Hash::add(hash, value);
       unsigned long long low = hash, high = hash;
       MPI_Allreduce(
         MPI_IN_PLACE, &low, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, MPI_COMM_WORLD);

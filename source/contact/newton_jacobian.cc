@@ -1,3 +1,4 @@
+#include <mbfem/base/hash.h>
 #include <mbfem/contact/newton_jacobian.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -143,7 +144,7 @@ namespace mbfem
         if (n_changed == 0)
           {
             // The J factorised: its factors, as a new LU would give them.
-            ++n_gmres;
+            ++n_old_factors;
             lu.solve(b);
             return all_finite(b);
           }
@@ -158,7 +159,7 @@ namespace mbfem
             const unsigned int used = solve_with_old_lu(b, budget, n_changed);
             if (used <= budget)
               {
-                ++n_gmres;
+                ++n_old_factors;
                 // Past half its budget GMRES will soon need more: the next
                 // solve factorises instead of trying it first.
                 refactorize_next = (2 * used > budget);
@@ -194,7 +195,7 @@ namespace mbfem
   std::pair<unsigned int, unsigned int>
   NewtonJacobian::solve_counts() const
   {
-    return {n_factorized, n_gmres};
+    return {n_factorized, n_old_factors};
   }
 
 
@@ -219,20 +220,19 @@ namespace mbfem
   std::vector<std::uint64_t>
   NewtonJacobian::row_hashes() const
   {
-    // Each value's bits mixed into its row's hash (FNV-1a's constants,
-    // a word at a time): a row whose hash is unchanged has (but for a
-    // collision, which costs GMRES iterations, not accuracy) the values
-    // it had.
+    // Each value's bits mixed into its row's hash: a row whose hash is
+    // unchanged has (but for a collision, which costs GMRES iterations,
+    // not accuracy) the values it had.
     std::vector<std::uint64_t> hashes(jacobian.m());
     for (unsigned int i = 0; i < jacobian.m(); ++i)
       {
-        std::uint64_t hash = 14695981039346656037ull;
+        std::uint64_t hash = Hash::start;
         for (auto entry = jacobian.begin(i); entry != jacobian.end(i); ++entry)
           {
             const double  value = entry->value();
             std::uint64_t bits;
             std::memcpy(&bits, &value, sizeof(double));
-            hash = (hash ^ bits) * 1099511628211ull;
+            hash = Hash::add(hash, bits);
           }
         hashes[i] = hash;
       }

@@ -33,7 +33,7 @@ namespace mbfem
   {
     /** Armijo's sufficient decrease of the line search. */
     constexpr double armijo = 1e-4;
-    /** Step halvings of the line search before a step is taken anyway. */
+    /** Step halvings of the line search before it gives up on the step. */
     constexpr unsigned int max_halvings = 30;
     /**
      * A Newton step cut to less than this fraction of its length by the

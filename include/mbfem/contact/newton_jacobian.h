@@ -83,7 +83,10 @@ namespace mbfem
     bool
     solve(Vector<double> &b);
 
-    /** How many solves used a new LU, and how many the old one with GMRES. */
+    /**
+     * How many solves made a new LU, and how many used the old one (with
+     * GMRES, or alone where J had not changed).
+     */
     std::pair<unsigned int, unsigned int>
     solve_counts() const;
 
@@ -111,7 +114,7 @@ namespace mbfem
     std::vector<std::uint64_t> factored_rows;
     /** Whether the next solve() factorises without trying GMRES first. */
     bool         refactorize_next = false;
-    unsigned int n_factorized = 0, n_gmres = 0;
+    unsigned int n_factorized = 0, n_old_factors = 0;
 
     /** GMRES's iterations that cost less than about half a factorisation. */
     unsigned int
