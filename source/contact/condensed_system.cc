@@ -1,9 +1,7 @@
 #include <mbfem/base/parallel.h>
 #include <mbfem/contact/condensed_system.h>
 
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
 #include <cmath>
@@ -76,6 +74,18 @@ namespace mbfem
     });
     share_blocks();
     find_held_directions();
+
+    // P_hat's non-zero entries by rows and by columns: a pair moves with
+    // the modes of its two blocks only.
+    coupling_rows.assign(n_pairs * dim, {});
+    coupling_columns.assign(coupling.n_modes(), {});
+    for (unsigned int i = 0; i < n_pairs * dim; ++i)
+      for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+        if (coupling(i, a) != 0.)
+          {
+            coupling_rows[i].emplace_back(a, coupling(i, a));
+            coupling_columns[a].emplace_back(i, coupling(i, a));
+          }
   }
 
 
@@ -526,18 +536,37 @@ namespace mbfem
         return true;
       }
 
-    Factorisation &system = factorisation;
-    if (system.coefficients != key || system.size != n)
+    // Sparse, the system is over every pair direction and floating mode.
+    const bool         dense  = !use_sparse(unknowns);
+    const unsigned int size   = dense ? n : n_r + coupling.n_modes();
+    Factorisation     &system = factorisation;
+    if (system.coefficients != key || system.size != size ||
+        system.dense != dense)
       {
-        request_columns(unknowns);
+        // No key until the columns are there: a throw in request_columns()
+        // must not leave the old factors under the new key.
+        system.coefficients.clear();
+        system.regular = false;
+        request_columns(dense ? unknowns : sparse_columns(unknowns));
         system.coefficients = key;
         system.unknowns     = unknowns;
-        assemble(equations, system);
+        system.dense        = dense;
+        if (dense)
+          assemble(equations, system);
+        else
+          assemble_sparse(equations, system);
       }
     if (!system.regular)
       return false;
 
-    Vector<double> rhs(n);
+    // Where unknown i and floating mode a are in the system.
+    const auto index = [&](const unsigned int i) {
+      return dense ? i : unknowns[i];
+    };
+    const auto mode_index = [&](const unsigned int a) {
+      return (dense ? n_rho : n_r) + a;
+    };
+    Vector<double> rhs(size);
     for (unsigned int i = 0; i < n_rho; ++i)
       {
         const unsigned int       row   = unknowns[i];
@@ -546,17 +575,20 @@ namespace mbfem
         for (unsigned int e = 0; e < dim; ++e)
           value -= eq.displacement_coefficients[e] *
                    loads.displacement((row / dim) * dim + e);
-        rhs(i) = (eq.has_force_terms() ? scale : 1.) * value;
+        rhs(index(i)) = (eq.has_force_terms() ? scale : 1.) * value;
       }
     for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-      rhs(n_rho + a) = -loads.resultant[a] * scale;
-    system.solve(rhs);
+      rhs(mode_index(a)) = -loads.resultant[a] * scale;
+    if (dense)
+      system.matrix.solve(rhs);
+    else if (!solve_sparse(equations, system, rhs))
+      return false;
 
     solution.reinit(n_r + coupling.n_modes());
     for (unsigned int i = 0; i < n_rho; ++i)
-      solution(unknowns[i]) = rhs(i) / scale;
+      solution(unknowns[i]) = rhs(index(i)) / scale;
     for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-      solution(n_r + a) = rhs(n_rho + a);
+      solution(n_r + a) = rhs(mode_index(a));
     return true;
   }
 
@@ -577,13 +609,6 @@ namespace mbfem
     // cache (keyed already) saying otherwise.
     system.regular = false;
     system.size    = n;
-    system.sparse_lu.reset();
-    if (use_sparse(unknowns))
-      {
-        system.matrix.reinit(0, 0);
-        assemble_sparse(equations, system);
-        return;
-      }
     std::vector<int> column_of(n_r, -1);
     for (unsigned int i = 0; i < n_rho; ++i)
       column_of[unknowns[i]] = i;
@@ -645,7 +670,7 @@ namespace mbfem
         for (unsigned int i = 0; i < n; ++i)
           probe(i) = std::sin(1.3 + 0.7 * i * (trial + 1)) + 0.1;
         const double probe_norm = probe.l1_norm();
-        system.solve(probe);
+        system.matrix.solve(probe);
         const double ratio = probe.l1_norm() / probe_norm;
         // Overflow past a tiny pivot (std::max would drop a NaN).
         if (!std::isfinite(ratio))
@@ -653,17 +678,6 @@ namespace mbfem
         inverse_norm = std::max(inverse_norm, ratio);
       }
     system.regular = std::isfinite(norm) && norm * inverse_norm < 1e12;
-  }
-
-
-  template <int dim>
-  void
-  CondensedSystem<dim>::Factorisation::solve(Vector<double> &x) const
-  {
-    if (sparse_lu)
-      sparse_lu->solve(x);
-    else
-      matrix.solve(x);
   }
 
 
@@ -694,97 +708,218 @@ namespace mbfem
     const std::vector<PairEquation<dim>> &equations,
     Factorisation                        &system) const
   {
-    const std::vector<unsigned int> &unknowns = system.unknowns;
-    const unsigned int               n_rho    = unknowns.size();
-    const unsigned int               n        = system.size;
-    const double                     scale    = flexibility_scale;
-    std::vector<int>                 column_of(n_pairs * dim, -1);
-    for (unsigned int i = 0; i < n_rho; ++i)
-      column_of[unknowns[i]] = i;
+    const unsigned int n_r = n_pairs * dim;
+    const unsigned int n   = n_r + coupling.n_modes();
+    std::vector<bool>  active(n, false);
+    for (const unsigned int row : system.unknowns)
+      active[row] = true;
+    std::fill(active.begin() + n_r, active.end(), true);
+    system.regular = false;
+    system.size    = n;
+    system.matrix.reinit(0, 0);
+    if (!system.sparse)
+      system.sparse = std::make_unique<UpdatedLU>();
+    UpdatedLU &lu = *system.sparse;
 
-    // The rows of assemble(), with C_hat's entries only where
-    // two pairs share a block (H_b of that block), each gathered through
-    // entry_of (a row's entry of each column, -1 for none) in the order
-    // the terms come, so that every sum is that of the dense assembly.
-    std::vector<SparseRow> rows(n);
-    std::vector<int>       entry_of(n, -1);
-    const auto             add =
-      [&](SparseRow &row, const unsigned int column, const double value) {
-        if (entry_of[column] < 0)
-          {
-            entry_of[column] = row.size();
-            row.emplace_back(column, 0.);
-          }
-        row[entry_of[column]].second += value;
-      };
-    // P_hat's non-zero entries in the unknowns' rows.
-    std::vector<SparseRow> coupling_of(n_rho);
-    for (unsigned int j = 0; j < n_rho; ++j)
-      for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-        if (coupling(unknowns[j], a) != 0.)
-          coupling_of[j].emplace_back(a, coupling(unknowns[j], a));
-    for (unsigned int i = 0; i < n_rho; ++i)
+    // The rows whose equations changed since the base, replaced.
+    const unsigned int stride = 2 * dim + 1;
+    if (lu.factorized() && lu.size() == n &&
+        system.base_coefficients.size() == system.coefficients.size() &&
+        system.base_columns == columns_on_demand().first)
       {
-        const unsigned int       row       = unknowns[i];
-        const unsigned int       k         = row / dim;
-        const PairEquation<dim> &eq        = equations[row];
-        const double             row_scale = eq.has_force_terms() ? scale : 1.;
-        for (unsigned int e = 0; e < dim; ++e)
+        std::vector<unsigned int> changed;
+        for (unsigned int row = 0; row < n_r && changed.size() <= lu.max_rank();
+             ++row)
+          if (!std::equal(system.coefficients.begin() + row * stride,
+                          system.coefficients.begin() + (row + 1) * stride,
+                          system.base_coefficients.begin() + row * stride))
+            changed.push_back(row);
+        if (changed.size() <= lu.max_rank())
           {
-            const double a = eq.displacement_coefficients[e];
-            if (a != 0.)
+            std::vector<UpdatedLU::Row> rows;
+            for (const unsigned int row : changed)
+              rows.push_back(sparse_row(equations, active, row));
+            if (lu.replace_rows(changed, rows))
               {
-                add_row(k,
-                        e,
-                        row_scale * a,
-                        column_of,
-                        [&](unsigned int c, double v) { add(rows[i], c, v); });
-                for (unsigned int b = 0; b < coupling.n_modes(); ++b)
-                  if (coupling(k * dim + e, b) != 0.)
-                    add(rows[i],
-                        n_rho + b,
-                        row_scale * a * coupling(k * dim + e, b));
+                estimate_sparse_condition(system);
+                // A system that seems singular is decided by its own LU.
+                if (system.regular)
+                  return;
               }
-            if (eq.force_coefficients[e] != 0. && column_of[k * dim + e] >= 0)
-              add(rows[i], column_of[k * dim + e], eq.force_coefficients[e]);
           }
-        for (const auto &[column, value] : rows[i])
-          entry_of[column] = -1;
       }
-    // Equilibrium of the floating blocks: P^T r = -F_e.
-    for (unsigned int j = 0; j < n_rho; ++j)
-      for (const auto &[a, value] : coupling_of[j])
-        rows[n_rho + a].emplace_back(j, value);
 
-    DynamicSparsityPattern               dsp(n, n);
-    std::vector<types::global_dof_index> columns;
-    for (unsigned int i = 0; i < n; ++i)
+    // A new base.
+    std::vector<UpdatedLU::Row> rows(n);
+    for (unsigned int row = 0; row < n; ++row)
+      rows[row] = sparse_row(equations, active, row);
+    system.base_coefficients.clear();
+    if (!lu.factorize(rows))
+      return; // a zero pivot
+    estimate_sparse_condition(system);
+    if (system.regular)
       {
-        columns.clear();
-        for (const auto &[j, value] : rows[i])
-          columns.push_back(j);
-        dsp.add_entries(i, columns.begin(), columns.end());
+        system.base_coefficients = system.coefficients;
+        system.base_columns      = columns_on_demand().first;
       }
-    SparsityPattern pattern;
-    pattern.copy_from(dsp);
-    SparseMatrix<double> matrix(pattern);
-    for (unsigned int i = 0; i < n; ++i)
-      for (const auto &[j, value] : rows[i])
-        matrix.set(i, j, value);
+  }
 
-    system.sparse_lu = std::make_unique<SparseDirectUMFPACK>();
-    try
+
+  template <int dim>
+  std::vector<unsigned int>
+  CondensedSystem<dim>::sparse_columns(
+    const std::vector<unsigned int> &unknowns) const
+  {
+    // Every direction of a pair with an unknown left free: sparse_row()
+    // reads H_b there where a column it needs was not computed.
+    std::vector<unsigned int> columns;
+    for (const unsigned int row : unknowns)
+      for (unsigned int f = 0; f < dim; ++f)
+        columns.push_back((row / dim) * dim + f);
+    std::sort(columns.begin(), columns.end());
+    columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+    return columns;
+  }
+
+
+  template <int dim>
+  UpdatedLU::Row
+  CondensedSystem<dim>::sparse_row(
+    const std::vector<PairEquation<dim>> &equations,
+    const std::vector<bool>              &active,
+    const unsigned int                    row) const
+  {
+    const unsigned int n_r = n_pairs * dim;
+    UpdatedLU::Row     entries;
+    if (row >= n_r)
       {
-        system.sparse_lu->factorize(matrix);
+        // Equilibrium of the floating blocks: P^T r = -F_e.
+        return coupling_columns[row - n_r];
       }
-    catch (const SparseDirectUMFPACK::ExcUMFPACKError &)
+    if (!active[row])
+      return {{row, 1.}};
+
+    // The terms of assemble()'s row, every pair direction a column.
+    const unsigned int       k  = row / dim;
+    const PairEquation<dim> &eq = equations[row];
+    const double row_scale      = eq.has_force_terms() ? flexibility_scale : 1.;
+    for (unsigned int e = 0; e < dim; ++e)
       {
-        // A zero pivot (UMFPACK's warning status 1, thrown by deal.II);
-        // running out of memory and the like pass on.
-        system.sparse_lu.reset();
-        return;
+        const double a = eq.displacement_coefficients[e];
+        if (a != 0.)
+          {
+            for (const auto &[b, s] : pair_sides[k])
+              {
+                const BlockFlexibility &flexibility = block_flexibility[b];
+                for (unsigned int t = 0; t < flexibility.pairs.size(); ++t)
+                  for (unsigned int f = 0; f < dim; ++f)
+                    {
+                      // H_b(s e, t f) as assemble() and
+                      // relative_displacement() read it; on demand where
+                      // column t f was not computed (a pair left out,
+                      // whose force is zero), its transpose, from the row's
+                      // own column (computed: sparse_columns()). A column
+                      // computed later makes a new base (base_columns).
+                      const double h =
+                        !flexibility.on_demand ?
+                          flexibility.matrix(s * dim + e, t * dim + f) :
+                        !flexibility.columns[t * dim + f].empty() ?
+                          flexibility.columns[t * dim + f][s * dim + e] :
+                          flexibility.columns[s * dim + e][t * dim + f];
+                      entries.emplace_back(flexibility.pairs[t] * dim + f,
+                                           row_scale * a * h /
+                                             flexibility_scale);
+                    }
+              }
+            for (const auto &[b, p] : coupling_rows[k * dim + e])
+              entries.emplace_back(n_r + b, row_scale * a * p);
+          }
+        if (eq.force_coefficients[e] != 0.)
+          entries.emplace_back(k * dim + e, eq.force_coefficients[e]);
       }
-    estimate_condition(system, matrix.l1_norm());
+    // Columns increasing, each sum in the order its terms came.
+    std::stable_sort(entries.begin(),
+                     entries.end(),
+                     [](const auto &x, const auto &y) {
+                       return x.first < y.first;
+                     });
+    UpdatedLU::Row merged;
+    for (const auto &[column, value] : entries)
+      if (!merged.empty() && merged.back().first == column)
+        merged.back().second += value;
+      else
+        merged.emplace_back(column, value);
+    return merged;
+  }
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::estimate_sparse_condition(Factorisation &system) const
+  {
+    // estimate_condition()'s probes on the unknowns left free (zero on the
+    // removed ones), its norm over their columns: the estimate of the dense
+    // system. Rows replaced in a regular base: regular where the bound of
+    // the condition number says so, a hundred times below the limit.
+    system.regular =
+      system.sparse->rank() > 0 && system.sparse->condition_bound() < 1e10;
+    if (system.regular)
+      return;
+    const unsigned int        n_r           = n_pairs * dim;
+    const unsigned int        n             = system.size;
+    std::vector<unsigned int> free_unknowns = system.unknowns;
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+      free_unknowns.push_back(n_r + a);
+    std::vector<bool> columns(n, false);
+    for (const unsigned int j : free_unknowns)
+      columns[j] = true;
+    const double norm         = system.sparse->l1_norm(columns);
+    double       inverse_norm = 0.;
+    system.regular            = false;
+    for (unsigned int trial = 0; trial < 2; ++trial)
+      {
+        Vector<double> probe(n);
+        double         probe_norm = 0.;
+        for (unsigned int i = 0; i < free_unknowns.size(); ++i)
+          {
+            probe(free_unknowns[i]) =
+              std::sin(1.3 + 0.7 * i * (trial + 1)) + 0.1;
+            probe_norm += std::abs(probe(free_unknowns[i]));
+          }
+        system.sparse->solve(probe, false);
+        double solution_norm = 0.;
+        for (const unsigned int j : free_unknowns)
+          solution_norm += std::abs(probe(j));
+        const double ratio = solution_norm / probe_norm;
+        if (!std::isfinite(ratio))
+          return;
+        inverse_norm = std::max(inverse_norm, ratio);
+      }
+    system.regular = std::isfinite(norm) && norm * inverse_norm < 1e12;
+  }
+
+
+  template <int dim>
+  bool
+  CondensedSystem<dim>::solve_sparse(
+    const std::vector<PairEquation<dim>> &equations,
+    Factorisation                        &system,
+    Vector<double>                       &x) const
+  {
+    // The factors of the base with rows replaced are accurate where S is
+    // well conditioned, which replace_rows() checked; a backward error
+    // above 1e-10 (a backward stable solve gives 1e-16) means they were
+    // not, and the system is factorised itself.
+    const Vector<double> b = x;
+    if (system.sparse->solve(x) <= 1e-10 || system.sparse->rank() == 0)
+      return true;
+    system.base_coefficients.clear();
+    assemble_sparse(equations, system);
+    if (!system.regular)
+      return false;
+    x = b;
+    system.sparse->solve(x);
+    return true;
   }
 
 
@@ -829,8 +964,8 @@ namespace mbfem
     const unsigned int n_r = n_pairs * dim;
     Vector<double>     d(loads.displacement);
     for (unsigned int i = 0; i < n_r; ++i)
-      for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-        d(i) += coupling(i, a) * solution(n_r + a);
+      for (const auto &[a, p] : coupling_rows[i])
+        d(i) += p * solution(n_r + a);
     // C_hat rho block by block, over the sides whose force is not zero.
     std::vector<unsigned int> forced;
     for (unsigned int i = 0; i < n_r; ++i)
@@ -839,7 +974,41 @@ namespace mbfem
     request_columns(forced);
     for (const auto &flexibility : block_flexibility)
       {
-        const unsigned int        n_sides = flexibility.pairs.size();
+        const unsigned int n_sides  = flexibility.pairs.size();
+        unsigned int       n_forced = 0;
+        for (unsigned int t = 0; t < n_sides; ++t)
+          for (unsigned int j = 0; j < dim; ++j)
+            n_forced += (solution(flexibility.pairs[t] * dim + j) != 0.);
+        if (n_forced == 0)
+          continue;
+        if (!flexibility.on_demand && 4 * n_forced >= n_sides * dim)
+          {
+            // H_b f by BLAS (H_b's rows are contiguous: the column-major
+            // H_b^T), some 2000 x 2000 on the slope's base block.
+            const types::blas_int n = n_sides * dim, one = 1;
+            if (n == 0)
+              continue;
+            Vector<double> f(n), value(n);
+            for (unsigned int t = 0; t < n_sides; ++t)
+              for (unsigned int j = 0; j < dim; ++j)
+                f(t * dim + j) = solution(flexibility.pairs[t] * dim + j);
+            const double alpha = 1., beta = 0.;
+            gemv("T",
+                 &n,
+                 &n,
+                 &alpha,
+                 &flexibility.matrix(0, 0),
+                 &n,
+                 f.begin(),
+                 &one,
+                 &beta,
+                 value.begin(),
+                 &one);
+            for (unsigned int s = 0; s < n_sides; ++s)
+              for (unsigned int i = 0; i < dim; ++i)
+                d(flexibility.pairs[s] * dim + i) += value(s * dim + i);
+            continue;
+          }
         std::vector<unsigned int> columns;
         std::vector<double>       forces;
         for (unsigned int t = 0; t < n_sides; ++t)

@@ -6,10 +6,10 @@
 #include <mbfem/contact/rigid_coupling.h>
 #include <mbfem/interface/contact_interface.h>
 #include <mbfem/interface/pair_equation.h>
+#include <mbfem/linear_algebra/updated_lu.h>
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/vector.h>
 
 #include <array>
@@ -171,30 +171,31 @@ namespace mbfem
     };
 
     /**
-     * The system of the last solve(), over the unknowns its states leave
-     * free (the directions of the pairs that are not open, and the floating
-     * modes), LU-factorised, dense in matrix or sparse in sparse_lu (then
-     * matrix is empty; see use_sparse()): a trial whose equations have the
-     * same coefficients (only their values differ) reuses it.
+     * The system of the last solve(), LU-factorised: a trial whose
+     * equations have the same coefficients (only their values differ)
+     * reuses it. Dense in matrix, over the unknowns its states leave free
+     * (the directions of the pairs that are not open, and the floating
+     * modes); or sparse (see use_sparse()) over every pair direction and
+     * floating mode, a removed unknown's row saying x_i = 0, in sparse
+     * (then matrix is empty). Sparse, the factors are those of an earlier
+     * system (base_coefficients) and the rows that changed since are
+     * solved for by UpdatedLU, so that a trial that switches few pairs
+     * costs substitutions, not a factorisation.
      */
     struct Factorisation
     {
-      std::vector<double>       coefficients; // the key
-      std::vector<unsigned int> unknowns;     // active rows of rho
-      unsigned int              size = 0;
-      LAPACKFullMatrix<double>  matrix;
-      /** The sparse LU instead of matrix (see use_sparse()). */
-      std::unique_ptr<SparseDirectUMFPACK> sparse_lu;
-      bool                                 regular = false;
-
-      /** x = A^{-1} x with whichever factorisation was made. */
-      void
-      solve(Vector<double> &x) const;
+      std::vector<double>        coefficients; // the key
+      std::vector<unsigned int>  unknowns;     // active rows of rho
+      unsigned int               size = 0;
+      LAPACKFullMatrix<double>   matrix;
+      bool                       dense = true;
+      std::unique_ptr<UpdatedLU> sparse;
+      /** The key of sparse's base; empty where it may not be updated. */
+      std::vector<double> base_coefficients;
+      /** Columns on demand computed when the base was assembled. */
+      std::size_t base_columns = 0;
+      bool        regular      = false;
     };
-
-    /** A row of a sparse system: (column, value). */
-    using SparseRow = std::vector<std::pair<unsigned int, double>>;
-
     /**
      * C_hat(k * dim + i, l * dim + j), from the blocks' H_b (columns on
      * demand computed first: request_columns()).
@@ -263,10 +264,55 @@ namespace mbfem
     assemble(const std::vector<PairEquation<dim>> &equations,
              Factorisation                        &system) const;
 
-    /** The same system as assemble(), as a sparse matrix. */
+    /**
+     * The same system as assemble(), sparse over every pair direction and
+     * floating mode: the rows that changed since sparse's base replaced
+     * (UpdatedLU), or, where they are too many or the change is nearly
+     * singular, a new base factorised. system.regular as assemble() says.
+     */
     void
     assemble_sparse(const std::vector<PairEquation<dim>> &equations,
                     Factorisation                        &system) const;
+
+    /**
+     * The columns of H_b that sparse_row() reads for the rows of
+     * @p unknowns: every direction of their pairs.
+     */
+    std::vector<unsigned int>
+    sparse_columns(const std::vector<unsigned int> &unknowns) const;
+
+    /**
+     * Row @p row of the sparse system of assemble_sparse() (columns
+     * increasing; rows beyond n_pairs * dim the floating modes'), @p active
+     * saying which rows are not x_i = 0. The columns of every pair
+     * direction, open or not, so that a pair that switches changes its own
+     * rows only.
+     */
+    UpdatedLU::Row
+    sparse_row(const std::vector<PairEquation<dim>> &equations,
+               const std::vector<bool>              &active,
+               const unsigned int                    row) const;
+
+    /**
+     * The sparse system's condition estimate over the unknowns left free:
+     * estimate_condition()'s of the dense system, or, where rows were
+     * replaced, UpdatedLU::condition_bound() where that is a hundred times
+     * below the limit.
+     */
+    void
+    estimate_sparse_condition(Factorisation &system) const;
+
+    /**
+     * Solves the sparse system in place (its unknowns, with x_i = 0 for
+     * the removed ones). Where rows were replaced and the answer's backward
+     * error is above 1e-10, factorises a new base and solves again (false
+     * where that is not regular); a new base's answer is taken as a fresh
+     * LU's always was.
+     */
+    bool
+    solve_sparse(const std::vector<PairEquation<dim>> &equations,
+                 Factorisation                        &system,
+                 Vector<double>                       &x) const;
 
     /**
      * Whether the system over @p unknowns is factorised sparse: by the
@@ -277,7 +323,7 @@ namespace mbfem
     bool
     use_sparse(const std::vector<unsigned int> &unknowns) const;
 
-    /** Sets system.regular from a condition estimate of the factorisation. */
+    /** Sets system.regular from a condition estimate of the dense LU. */
     void
     estimate_condition(Factorisation &system, const double norm) const;
 
@@ -293,7 +339,9 @@ namespace mbfem
     std::vector<std::vector<std::pair<unsigned int, unsigned int>>> pair_sides;
     double                             flexibility_scale = 1.;
     std::vector<std::array<bool, dim>> held_directions;
-    Factorisation                      factorisation;
+    /** P_hat's non-zero entries: per pair direction, and per mode. */
+    std::vector<UpdatedLU::Row> coupling_rows, coupling_columns;
+    Factorisation               factorisation;
   };
 } // namespace mbfem
 

@@ -1,0 +1,379 @@
+#include <mbfem/linear_algebra/updated_lu.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace mbfem
+{
+  bool
+  UpdatedLU::factorize(const std::vector<Row> &rows)
+  {
+    const unsigned int n = rows.size();
+    z.clear();
+    changed.clear();
+    difference.clear();
+    changed_row_norm.clear();
+    capacitance.reinit(0, 0);
+    change_l1_norm = z_l1_norm = capacitance_inverse_l1_norm = 0.;
+    is_factorized                                            = false;
+
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (const auto &[j, value] : rows[i])
+        dsp.add(i, j);
+    base.clear();
+    pattern.copy_from(dsp);
+    base.reinit(pattern);
+    for (unsigned int i = 0; i < n; ++i)
+      for (const auto &[j, value] : rows[i])
+        base.add(i, j, value);
+    base_norm = base.linfty_norm();
+
+    ++n_factorizations;
+    is_factorized = lu.factorize(base, true);
+    if (is_factorized)
+      estimate_base_condition();
+    return is_factorized;
+  }
+
+
+
+  void
+  UpdatedLU::estimate_base_condition()
+  {
+    Vector<double> column_sum(size());
+    for (unsigned int i = 0; i < size(); ++i)
+      for (auto entry = base.begin(i); entry != base.end(i); ++entry)
+        column_sum(entry->column()) += std::abs(entry->value());
+    base_l1_norm = column_sum.linfty_norm();
+    base_inverse_l1_norm =
+      probe_inverse_norm(size(),
+                         [this](Vector<double> &x) { lu.solve(x, false); });
+  }
+
+
+
+  double
+  UpdatedLU::probe_inverse_norm(
+    const unsigned int                           n,
+    const std::function<void(Vector<double> &)> &apply)
+  {
+    // |M^{-1}|_1 from below, from two pseudo-random right-hand sides (as
+    // CondensedSystem::estimate_condition() does); infinite where a probe
+    // overflows.
+    double inverse_norm = 0.;
+    for (unsigned int trial = 0; trial < 2; ++trial)
+      {
+        Vector<double> probe(n);
+        for (unsigned int a = 0; a < n; ++a)
+          probe(a) = std::sin(0.9 + 0.7 * a * (trial + 1)) + 0.1;
+        const double probe_norm = probe.l1_norm();
+        apply(probe);
+        const double ratio = probe.l1_norm() / probe_norm;
+        // Overflow past a tiny pivot (std::max would drop a NaN).
+        if (!std::isfinite(ratio))
+          return std::numeric_limits<double>::max();
+        inverse_norm = std::max(inverse_norm, ratio);
+      }
+    return inverse_norm;
+  }
+
+
+
+  double
+  UpdatedLU::condition_bound() const
+  {
+    // A^{-1} = (I - Z S^{-1} D) A_0^{-1}, so
+    // |A^{-1}|_1 <= |A_0^{-1}|_1 (1 + |Z|_1 |S^{-1}|_1 |D|_1), and
+    // |A|_1 <= |A_0|_1 + |D|_1; each inverse's norm estimated from below.
+    return (base_l1_norm + change_l1_norm) * base_inverse_l1_norm *
+           (1. + z_l1_norm * capacitance_inverse_l1_norm * change_l1_norm);
+  }
+
+
+
+  bool
+  UpdatedLU::factorized() const
+  {
+    return is_factorized;
+  }
+
+
+
+  unsigned int
+  UpdatedLU::size() const
+  {
+    return base.m();
+  }
+
+
+
+  unsigned int
+  UpdatedLU::rank() const
+  {
+    return changed.size();
+  }
+
+
+
+  unsigned int
+  UpdatedLU::max_rank() const
+  {
+    // Half the flop ratio: a substitution takes some five times more time
+    // per flop than a factorisation (on the slope the flop ratio is 222,
+    // the time ratio 45), so a factorisation costs about as much time as
+    // the substitutions of Z's columns for half as many rows.
+    const double ratio = lu.substitutions_per_factorization();
+    return static_cast<unsigned int>(std::clamp(ratio / 2., 8., 200.));
+  }
+
+
+
+  bool
+  UpdatedLU::replace_rows(const std::vector<unsigned int> &indices,
+                          const std::vector<Row>          &rows)
+  {
+    Assert(is_factorized, ExcMessage("UpdatedLU: nothing factorised."));
+    AssertDimension(indices.size(), rows.size());
+    changed.clear();
+    difference.clear();
+    changed_row_norm.clear();
+    capacitance.reinit(0, 0);
+    change_l1_norm = z_l1_norm = capacitance_inverse_l1_norm = 0.;
+    const unsigned int m                                     = indices.size();
+    if (m == 0)
+      return true;
+    if (m > max_rank())
+      return false;
+
+    // d_a = new row - old row, merged over the two sorted rows.
+    for (unsigned int a = 0; a < m; ++a)
+      {
+        const unsigned int i = indices[a];
+        Row                old;
+        for (auto entry = base.begin(i); entry != base.end(i); ++entry)
+          if (entry->value() != 0.)
+            old.emplace_back(entry->column(), entry->value());
+        std::sort(old.begin(), old.end());
+        Row    d;
+        double norm = 0.;
+        auto   p    = old.begin();
+        for (const auto &[j, value] : rows[a])
+          {
+            for (; p != old.end() && p->first < j; ++p)
+              d.emplace_back(p->first, -p->second);
+            double v = value;
+            if (p != old.end() && p->first == j)
+              v -= (p++)->second;
+            if (v != 0.)
+              d.emplace_back(j, v);
+            norm += std::abs(value);
+          }
+        for (; p != old.end(); ++p)
+          d.emplace_back(p->first, -p->second);
+        changed.push_back(i);
+        difference.push_back(std::move(d));
+        changed_row_norm.push_back(norm);
+      }
+
+    // Z's columns of rows no longer changed are dropped once there are
+    // twice as many as a change may have, so that Z holds at most 3
+    // max_rank() columns.
+    if (z.size() > 2 * max_rank())
+      {
+        for (auto column = z.begin(); column != z.end();)
+          if (std::find(changed.begin(), changed.end(), column->first) ==
+              changed.end())
+            column = z.erase(column);
+          else
+            ++column;
+      }
+
+    // Z's columns not yet computed: one unrefined substitution each (its
+    // errors are those of A_0's factors, which the refinement in solve()
+    // corrects).
+    for (const unsigned int i : changed)
+      if (z.find(i) == z.end())
+        {
+          Vector<double> column(size());
+          column(i) = 1.;
+          lu.solve(column, false);
+          z.emplace(i, std::move(column));
+          ++n_columns;
+        }
+
+    // S = I + D Z.
+    capacitance.reinit(m, m);
+    for (unsigned int a = 0; a < m; ++a)
+      for (unsigned int b = 0; b < m; ++b)
+        {
+          const Vector<double> &column = z.at(changed[b]);
+          double                value  = (a == b) ? 1. : 0.;
+          for (const auto &[j, d] : difference[a])
+            value += d * column(j);
+          capacitance(a, b) = value;
+        }
+    try
+      {
+        capacitance.compute_lu_factorization();
+      }
+    catch (const LACExceptions::ExcSingular &)
+      {
+        changed.clear();
+        difference.clear();
+        changed_row_norm.clear();
+        capacitance.reinit(0, 0);
+        return false;
+      }
+    // The norms of condition_bound().
+    capacitance_inverse_l1_norm =
+      probe_inverse_norm(m,
+                         [this](Vector<double> &x) { capacitance.solve(x); });
+    z_l1_norm = 0.;
+    for (const unsigned int i : changed)
+      z_l1_norm = std::max(z_l1_norm, z.at(i).l1_norm());
+    std::map<unsigned int, double> column_sum;
+    for (const Row &d : difference)
+      for (const auto &[j, value] : d)
+        column_sum[j] += std::abs(value);
+    change_l1_norm = 0.;
+    for (const auto &[j, sum] : column_sum)
+      change_l1_norm = std::max(change_l1_norm, sum);
+
+    // A nearly singular S (S is I where nothing changed, so its inverse's
+    // norm alone says how close A is to singular relative to A_0), or an A
+    // that may be near its caller's limit of regular systems: refused, the
+    // caller's own LU decides.
+    if (!(capacitance_inverse_l1_norm < 1e10 && condition_bound() < 1e12))
+      {
+        changed.clear();
+        difference.clear();
+        changed_row_norm.clear();
+        capacitance.reinit(0, 0);
+        change_l1_norm = z_l1_norm = capacitance_inverse_l1_norm = 0.;
+        return false;
+      }
+    return true;
+  }
+
+
+
+  void
+  UpdatedLU::apply_inverse(Vector<double> &x) const
+  {
+    lu.solve(x, false);
+    const unsigned int m = changed.size();
+    if (m == 0)
+      return;
+    Vector<double> t(m);
+    for (unsigned int a = 0; a < m; ++a)
+      for (const auto &[j, d] : difference[a])
+        t(a) += d * x(j);
+    capacitance.solve(t);
+    for (unsigned int b = 0; b < m; ++b)
+      x.add(-t(b), z.at(changed[b]));
+  }
+
+
+
+  void
+  UpdatedLU::vmult(Vector<double> &y, const Vector<double> &x) const
+  {
+    base.vmult(y, x);
+    for (unsigned int a = 0; a < changed.size(); ++a)
+      {
+        double value = 0.;
+        for (const auto &[j, d] : difference[a])
+          value += d * x(j);
+        y(changed[a]) += value;
+      }
+  }
+
+
+
+  double
+  UpdatedLU::infinity_norm() const
+  {
+    double norm = base_norm;
+    for (const double row_norm : changed_row_norm)
+      norm = std::max(norm, row_norm);
+    return norm;
+  }
+
+
+
+  double
+  UpdatedLU::l1_norm(const std::vector<bool> &columns) const
+  {
+    AssertDimension(columns.size(), size());
+    Vector<double>    sum(size());
+    std::vector<bool> is_changed(size(), false);
+    for (const unsigned int i : changed)
+      is_changed[i] = true;
+    for (unsigned int i = 0; i < size(); ++i)
+      if (!is_changed[i])
+        for (auto entry = base.begin(i); entry != base.end(i); ++entry)
+          sum(entry->column()) += std::abs(entry->value());
+    // A changed row: its old entries plus its difference, column by column.
+    for (unsigned int a = 0; a < changed.size(); ++a)
+      {
+        std::map<unsigned int, double> row;
+        for (auto entry = base.begin(changed[a]); entry != base.end(changed[a]);
+             ++entry)
+          row[entry->column()] += entry->value();
+        for (const auto &[j, d] : difference[a])
+          row[j] += d;
+        for (const auto &[j, value] : row)
+          sum(j) += std::abs(value);
+      }
+    double norm = 0.;
+    for (unsigned int j = 0; j < size(); ++j)
+      if (columns[j])
+        norm = std::max(norm, sum(j));
+    return norm;
+  }
+
+
+
+  double
+  UpdatedLU::solve(Vector<double> &x, const bool refine) const
+  {
+    Assert(is_factorized, ExcMessage("UpdatedLU: nothing factorised."));
+    if (!refine)
+      {
+        apply_inverse(x);
+        return 0.;
+      }
+    const Vector<double> b      = x;
+    const double         a_norm = infinity_norm();
+    Vector<double>       residual(b.size()), correction;
+    double               error = 0.;
+    apply_inverse(x);
+    for (unsigned int step = 0;; ++step)
+      {
+        vmult(residual, x);
+        residual.sadd(-1., 1., b);
+        const double scale = a_norm * x.linfty_norm() + b.linfty_norm();
+        error              = scale > 0. ? residual.linfty_norm() / scale : 0.;
+        // Rounding in the residual itself is some n eps |A| |x|; a step
+        // below ten times eps would not improve x.
+        if (!std::isfinite(error) || error < 1e-15 || step == 2)
+          break;
+        correction = residual;
+        apply_inverse(correction);
+        x += correction;
+      }
+    return std::isfinite(error) ? error : std::numeric_limits<double>::max();
+  }
+
+
+
+  std::pair<unsigned int, unsigned int>
+  UpdatedLU::counts() const
+  {
+    return {n_factorizations, n_columns};
+  }
+} // namespace mbfem
