@@ -13,13 +13,15 @@ namespace mbfem
 {
   namespace
   {
-    /** UMFPACK's defaults, with METIS's ordering. */
+    /** UMFPACK's defaults, with @p ordering. */
     std::array<double, UMFPACK_CONTROL>
-    control()
+    control(const SparseLU::Ordering ordering)
     {
       std::array<double, UMFPACK_CONTROL> c;
       umfpack_dl_defaults(c.data());
-      c[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
+      c[UMFPACK_ORDERING] = ordering == SparseLU::Ordering::metis ?
+                              UMFPACK_ORDERING_METIS :
+                              UMFPACK_ORDERING_AMD;
       return c;
     }
 
@@ -32,6 +34,12 @@ namespace mbfem
                              " (umfpack.h lists the codes)."));
     }
   } // namespace
+
+
+
+  SparseLU::SparseLU(const Ordering ordering)
+    : ordering(ordering)
+  {}
 
 
 
@@ -94,7 +102,7 @@ namespace mbfem
     row_index.swap(index);
     values.swap(value);
 
-    const auto                       c = control();
+    const auto                       c = control(ordering);
     std::array<double, UMFPACK_INFO> info;
     clear_numeric();
     if (same_pattern)
@@ -140,7 +148,7 @@ namespace mbfem
     Assert(x.size() + 1 == column_start.size(),
            ExcDimensionMismatch(x.size(), column_start.size() - 1));
     const Vector<double> b = x;
-    auto                 c = control();
+    auto                 c = control(ordering);
     if (!refine)
       c[UMFPACK_IRSTEP] = 0;
     std::array<double, UMFPACK_INFO> info;

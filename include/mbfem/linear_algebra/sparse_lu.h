@@ -16,7 +16,8 @@ namespace mbfem
    * SparseDirectUMFPACK does it, with two differences that matter for the
    * semismooth Newton method's systems (NewtonJacobian):
    *
-   * - METIS's nested dissection orders the unknowns. A condensed system is
+   * - METIS's nested dissection orders the unknowns (or, by the
+   *   constructor's argument, UMFPACK's default COLAMD). A condensed system is
    *   a graph of blocks, each a dense clique of its pairs' unknowns; on the
    *   jointed slope's Jacobian (4442 unknowns) METIS needs 1.5 times fewer
    *   flops than UMFPACK's default (COLAMD), on the Levenberg-Marquardt
@@ -28,7 +29,16 @@ namespace mbfem
   class SparseLU
   {
   public:
-    SparseLU() = default;
+    /** The fill-reducing ordering of the symbolic analysis. */
+    enum class Ordering
+    {
+      /** METIS's nested dissection (of A^T A's pattern, UMFPACK's way). */
+      metis,
+      /** UMFPACK's default: COLAMD (AMD where it takes A as symmetric). */
+      amd
+    };
+
+    SparseLU(const Ordering ordering = Ordering::metis);
 
     SparseLU(const SparseLU &) = delete;
 
@@ -83,6 +93,7 @@ namespace mbfem
     std::vector<double> values;
     void               *symbolic = nullptr;
     void               *numeric  = nullptr;
+    Ordering            ordering;
     unsigned int        reused = 0, analysed = 0;
     /** UMFPACK's flops and entries of L and U of the last factorisation. */
     double factor_flops = 0., factor_entries = 0.;
