@@ -1,5 +1,6 @@
 #include <mbfem/base/parallel.h>
 #include <mbfem/contact/condensed_system.h>
+#include <mbfem/linear_algebra/inverse_norm.h>
 
 #include <deal.II/lac/lapack_templates.h>
 
@@ -660,23 +661,11 @@ namespace mbfem
   CondensedSystem<dim>::estimate_condition(Factorisation &system,
                                            const double   norm) const
   {
-    // Condition estimate ||A||_1 ||A^{-1}||_1 from two pseudo-random
-    // right-hand sides (LAPACKFullMatrix's own estimate is for Cholesky).
-    const unsigned int n            = system.size;
-    double             inverse_norm = 0.;
-    for (unsigned int trial = 0; trial < 2; ++trial)
-      {
-        Vector<double> probe(n);
-        for (unsigned int i = 0; i < n; ++i)
-          probe(i) = std::sin(1.3 + 0.7 * i * (trial + 1)) + 0.1;
-        const double probe_norm = probe.l1_norm();
-        system.matrix.solve(probe);
-        const double ratio = probe.l1_norm() / probe_norm;
-        // Overflow past a tiny pivot (std::max would drop a NaN).
-        if (!std::isfinite(ratio))
-          return;
-        inverse_norm = std::max(inverse_norm, ratio);
-      }
+    // Condition estimate ||A||_1 ||A^{-1}||_1.
+    const double inverse_norm =
+      inverse_norm_estimate(system.size, {}, [&](Vector<double> &x) {
+        system.matrix.solve(x);
+      });
     system.regular = std::isfinite(norm) && norm * inverse_norm < 1e12;
   }
 
@@ -873,28 +862,11 @@ namespace mbfem
     std::vector<bool> columns(n, false);
     for (const unsigned int j : free_unknowns)
       columns[j] = true;
-    const double norm         = system.sparse->l1_norm(columns);
-    double       inverse_norm = 0.;
-    system.regular            = false;
-    for (unsigned int trial = 0; trial < 2; ++trial)
-      {
-        Vector<double> probe(n);
-        double         probe_norm = 0.;
-        for (unsigned int i = 0; i < free_unknowns.size(); ++i)
-          {
-            probe(free_unknowns[i]) =
-              std::sin(1.3 + 0.7 * i * (trial + 1)) + 0.1;
-            probe_norm += std::abs(probe(free_unknowns[i]));
-          }
-        system.sparse->solve(probe, false);
-        double solution_norm = 0.;
-        for (const unsigned int j : free_unknowns)
-          solution_norm += std::abs(probe(j));
-        const double ratio = solution_norm / probe_norm;
-        if (!std::isfinite(ratio))
-          return;
-        inverse_norm = std::max(inverse_norm, ratio);
-      }
+    const double norm = system.sparse->l1_norm(columns);
+    const double inverse_norm =
+      inverse_norm_estimate(n, free_unknowns, [&](Vector<double> &x) {
+        system.sparse->solve(x, false);
+      });
     system.regular = std::isfinite(norm) && norm * inverse_norm < 1e12;
   }
 

@@ -1,3 +1,4 @@
+#include <mbfem/linear_algebra/inverse_norm.h>
 #include <mbfem/linear_algebra/updated_lu.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -50,35 +51,9 @@ namespace mbfem
         column_sum(entry->column()) += std::abs(entry->value());
     base_l1_norm = column_sum.linfty_norm();
     base_inverse_l1_norm =
-      probe_inverse_norm(size(),
-                         [this](Vector<double> &x) { lu.solve(x, false); });
-  }
-
-
-
-  double
-  UpdatedLU::probe_inverse_norm(
-    const unsigned int                           n,
-    const std::function<void(Vector<double> &)> &apply)
-  {
-    // |M^{-1}|_1 from below, from two pseudo-random right-hand sides (as
-    // CondensedSystem::estimate_condition() does); infinite where a probe
-    // overflows.
-    double inverse_norm = 0.;
-    for (unsigned int trial = 0; trial < 2; ++trial)
-      {
-        Vector<double> probe(n);
-        for (unsigned int a = 0; a < n; ++a)
-          probe(a) = std::sin(0.9 + 0.7 * a * (trial + 1)) + 0.1;
-        const double probe_norm = probe.l1_norm();
-        apply(probe);
-        const double ratio = probe.l1_norm() / probe_norm;
-        // Overflow past a tiny pivot (std::max would drop a NaN).
-        if (!std::isfinite(ratio))
-          return std::numeric_limits<double>::max();
-        inverse_norm = std::max(inverse_norm, ratio);
-      }
-    return inverse_norm;
+      inverse_norm_estimate(size(), {}, [this](Vector<double> &x) {
+        lu.solve(x, false);
+      });
   }
 
 
@@ -230,8 +205,9 @@ namespace mbfem
       }
     // The norms of condition_bound().
     capacitance_inverse_l1_norm =
-      probe_inverse_norm(m,
-                         [this](Vector<double> &x) { capacitance.solve(x); });
+      inverse_norm_estimate(m, {}, [this](Vector<double> &x) {
+        capacitance.solve(x);
+      });
     z_l1_norm = 0.;
     for (const unsigned int i : changed)
       z_l1_norm = std::max(z_l1_norm, z.at(i).l1_norm());

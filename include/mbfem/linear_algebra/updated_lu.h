@@ -133,13 +133,6 @@ namespace mbfem
     void
     estimate_base_condition();
 
-    /**
-     * |M^{-1}|_1 estimated from below by two pseudo-random probes, @p apply
-     * applying M^{-1} to a vector of size @p n.
-     */
-    static double
-    probe_inverse_norm(const unsigned int                           n,
-                       const std::function<void(Vector<double> &)> &apply);
 
     SparsityPattern      pattern;
     SparseMatrix<double> base;
