@@ -537,26 +537,25 @@ namespace mbfem
         return true;
       }
 
-    // Sparse, the system is over every pair direction and floating mode.
-    const bool         dense  = !use_sparse(unknowns);
-    const unsigned int size   = dense ? n : n_r + coupling.n_modes();
-    Factorisation     &system = factorisation;
-    if (system.coefficients != key || system.size != size ||
-        system.dense != dense)
+    // The key decides the unknowns and so whether the system is sparse
+    // (then over every pair direction and floating mode).
+    Factorisation &system = factorisation;
+    if (system.coefficients != key)
       {
         // No key until the columns are there: a throw in request_columns()
         // must not leave the old factors under the new key.
         system.coefficients.clear();
         system.regular = false;
-        request_columns(dense ? unknowns : sparse_columns(unknowns));
+        system.dense   = !use_sparse(unknowns);
+        request_columns(system.dense ? unknowns : sparse_columns(unknowns));
         system.coefficients = key;
         system.unknowns     = unknowns;
-        system.dense        = dense;
-        if (dense)
+        if (system.dense)
           assemble(equations, system);
         else
           assemble_sparse(equations, system);
       }
+    const bool dense = system.dense;
     if (!system.regular)
       return false;
 
@@ -567,7 +566,7 @@ namespace mbfem
     const auto mode_index = [&](const unsigned int a) {
       return (dense ? n_rho : n_r) + a;
     };
-    Vector<double> rhs(size);
+    Vector<double> rhs(system.size);
     for (unsigned int i = 0; i < n_rho; ++i)
       {
         const unsigned int       row   = unknowns[i];
