@@ -203,13 +203,22 @@ namespace mbfem
   bool
   LoadPath<dim>::solve_segment(Trial &trial, const double s_a, Segment &segment)
   {
+    // With the states fixed the solution is affine in s: solved at s = 0
+    // and s = 1, whose right-hand sides change only in the rows of pairs
+    // that switched (UpdatedLU then solves without a substitution), and
+    // interpolated at s_a.
     segment.s_a = s_a;
-    loads.set_fraction(start_loads, full_loads, s_a);
-    if (!solve(trial, segment.x_a, segment.d_a))
+    Vector<double> x_0, d_0;
+    loads.set_fraction(start_loads, full_loads, 0.);
+    if (!solve(trial, x_0, d_0))
       return false;
     loads.set_fraction(start_loads, full_loads, 1.);
     if (!solve(trial, segment.x_1, segment.d_1))
       return false;
+    segment.x_a = x_0;
+    segment.x_a.sadd(1. - s_a, s_a, segment.x_1);
+    segment.d_a = d_0;
+    segment.d_a.sadd(1. - s_a, s_a, segment.d_1);
 
     const unsigned int n_r = pairs.size() * dim;
     segment.force_scale = segment.displacement_scale = 1e-300;

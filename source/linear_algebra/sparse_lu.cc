@@ -142,6 +142,16 @@ namespace mbfem
 
 
   void
+  SparseLU::set_ordering(const Ordering new_ordering)
+  {
+    if (new_ordering != ordering)
+      clear_symbolic();
+    ordering = new_ordering;
+  }
+
+
+
+  void
   SparseLU::solve(Vector<double> &x, const bool refine) const
   {
     Assert(numeric != nullptr, ExcMessage("SparseLU: nothing factorised."));

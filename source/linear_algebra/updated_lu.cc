@@ -14,6 +14,7 @@ namespace mbfem
   {
     const unsigned int n = rows.size();
     z.clear();
+    base_solutions.clear();
     changed.clear();
     difference.clear();
     changed_row_norm.clear();
@@ -52,7 +53,7 @@ namespace mbfem
     base_l1_norm = column_sum.linfty_norm();
     base_inverse_l1_norm =
       inverse_norm_estimate(size(), {}, [this](Vector<double> &x) {
-        lu.solve(x, false);
+        substitute(x, false);
       });
   }
 
@@ -175,7 +176,7 @@ namespace mbfem
         {
           Vector<double> column(size());
           column(i) = 1.;
-          lu.solve(column, false);
+          substitute(column, false);
           z.emplace(i, std::move(column));
           ++n_columns;
         }
@@ -238,9 +239,56 @@ namespace mbfem
 
 
   void
-  UpdatedLU::apply_inverse(Vector<double> &x) const
+  UpdatedLU::substitute(Vector<double> &x, const bool refine) const
   {
-    lu.solve(x, false);
+    lu.solve(x, refine);
+    ++n_substitutions;
+  }
+
+
+
+  bool
+  UpdatedLU::recall_base_solution(Vector<double> &x) const
+  {
+    std::vector<bool> is_changed(size(), false);
+    for (const unsigned int i : changed)
+      is_changed[i] = true;
+    for (const auto &[b_0, y_0] : base_solutions)
+      {
+        bool same = true;
+        for (unsigned int j = 0; j < size() && same; ++j)
+          same = is_changed[j] || x(j) == b_0(j);
+        if (!same)
+          continue;
+        // y = A_0^{-1} (b_0 + sum_a (b - b_0)_(i_a) e_(i_a)).
+        Vector<double> y = y_0;
+        for (const unsigned int i : changed)
+          if (x(i) != b_0(i))
+            y.add(x(i) - b_0(i), z.at(i));
+        x.swap(y);
+        ++n_recalled;
+        return true;
+      }
+    return false;
+  }
+
+
+
+  void
+  UpdatedLU::apply_inverse(Vector<double> &x, const bool remember) const
+  {
+    if (!remember)
+      substitute(x, false);
+    else if (!recall_base_solution(x))
+      {
+        // Refined against A_0 (UMFPACK's own steps): every later solve
+        // that recalls it starts from it.
+        Vector<double> b = x;
+        substitute(x, true);
+        base_solutions.emplace(base_solutions.begin(), std::move(b), x);
+        if (base_solutions.size() > 4)
+          base_solutions.pop_back();
+      }
     const unsigned int m = changed.size();
     if (m == 0)
       return;
@@ -327,7 +375,7 @@ namespace mbfem
     const double         a_norm = infinity_norm();
     Vector<double>       residual(b.size()), correction;
     double               error = 0.;
-    apply_inverse(x);
+    apply_inverse(x, true);
     for (unsigned int step = 0;; ++step)
       {
         vmult(residual, x);
@@ -351,5 +399,13 @@ namespace mbfem
   UpdatedLU::counts() const
   {
     return {n_factorizations, n_columns};
+  }
+
+
+
+  std::pair<unsigned int, unsigned int>
+  UpdatedLU::solve_counts() const
+  {
+    return {n_substitutions, n_recalled};
   }
 } // namespace mbfem

@@ -103,7 +103,10 @@ namespace mbfem
   private:
     SparsityPattern      pattern;
     SparseMatrix<double> a_matrix, jacobian;
-    /** J's factors; their ordering serves every J of the pattern. */
+    /**
+     * J's factors; where the pattern is kept, METIS's ordering serves every
+     * J of it (with the zeros dropped, COLAMD's, analysed each time).
+     */
     SparseLU     lu;
     unsigned int n_rows_of_a = 0;
     /**

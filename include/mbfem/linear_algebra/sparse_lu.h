@@ -17,14 +17,15 @@ namespace mbfem
    * semismooth Newton method's systems (NewtonJacobian):
    *
    * - METIS's nested dissection orders the unknowns (or, by the
-   *   constructor's argument, UMFPACK's default COLAMD). A condensed system is
-   *   a graph of blocks, each a dense clique of its pairs' unknowns; on the
-   *   jointed slope's Jacobian (4442 unknowns) METIS needs 1.5 times fewer
-   *   flops than UMFPACK's default (COLAMD), on the Levenberg-Marquardt
-   *   system 2.7 times fewer (doc/state_iteration.md).
+   *   constructor's argument or set_ordering(), UMFPACK's default COLAMD,
+   *   whose analysis is cheaper where it is redone at every factorisation). A
+   * condensed system is a graph of blocks, each a dense clique of its pairs'
+   * unknowns; on the jointed slope's Jacobian (4442 unknowns) METIS needs 1.5
+   * times fewer flops than UMFPACK's default (COLAMD), on the
+   * Levenberg-Marquardt system 2.7 times fewer (doc/state_iteration.md).
    * - The symbolic analysis (ordering, fronts) is kept and reused while
    *   the sparsity pattern stays the same, as it does over a Newton
-   *   iteration, so METIS's cost is paid once per pattern.
+   *   iteration, so the ordering's cost is paid once per pattern.
    */
   class SparseLU
   {
@@ -57,6 +58,13 @@ namespace mbfem
     bool
     factorize(const SparseMatrix<double> &matrix,
               const bool                  drop_zeros = false);
+
+    /**
+     * The ordering of the next analysis (the kept one is dropped where it
+     * changes).
+     */
+    void
+    set_ordering(const Ordering new_ordering);
 
     /**
      * x = A^{-1} x, in place, with the last factorisation; with @p refine

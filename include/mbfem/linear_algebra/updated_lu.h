@@ -33,6 +33,10 @@ namespace mbfem
    * the load path and the fast iteration, CondensedSystem) costs a few
    * substitutions per matrix instead of a factorisation (on the jointed
    * slope's 4442 unknowns a substitution takes about a fortieth of one).
+   * The right-hand sides of a state iteration change only in the rows of
+   * the pairs whose states changed, so A_0^{-1} b is remembered for the
+   * last few b: where b differs from such a b_0 only in replaced rows,
+   * y = y_0 + Z (b - b_0) without a substitution.
    * det A = det A_0 det S, so A is singular where S is; a nearly singular S
    * is refused (replace_rows() false) and the caller factorises A itself,
    * whose verdict is then the one of a fresh LU.
@@ -120,10 +124,32 @@ namespace mbfem
     std::pair<unsigned int, unsigned int>
     counts() const;
 
+    /**
+     * Substitutions with A_0's factors since construction, and solves
+     * whose y = A_0^{-1} b came from a remembered one instead.
+     */
+    std::pair<unsigned int, unsigned int>
+    solve_counts() const;
+
   private:
-    /** x = A^{-1} x by the formula, without refinement. */
+    /**
+     * x = A^{-1} x by the formula, without refinement; with @p remember,
+     * y = A_0^{-1} b from a remembered one where it can, else by a refined
+     * substitution that is then remembered.
+     */
     void
-    apply_inverse(Vector<double> &x) const;
+    apply_inverse(Vector<double> &x, const bool remember = false) const;
+
+    /**
+     * x = A_0^{-1} x from a remembered (b_0, y_0) whose b_0 equals x
+     * outside the replaced rows; false where none does.
+     */
+    bool
+    recall_base_solution(Vector<double> &x) const;
+
+    /** x = A_0^{-1} x by A_0's factors, counted. */
+    void
+    substitute(Vector<double> &x, const bool refine) const;
 
     /** |A|_inf, for the backward error. */
     double
@@ -153,6 +179,10 @@ namespace mbfem
     std::vector<double>       changed_row_norm; // |new row|_1
     LAPACKFullMatrix<double>  capacitance;
     unsigned int              n_factorizations = 0, n_columns = 0;
+    /** (b_0, A_0^{-1} b_0), the most recent first, since the factorisation. */
+    mutable std::vector<std::pair<Vector<double>, Vector<double>>>
+                         base_solutions;
+    mutable unsigned int n_substitutions = 0, n_recalled = 0;
     /** The norms of condition_bound(). */
     double base_l1_norm = 0., base_inverse_l1_norm = 0., change_l1_norm = 0.,
            z_l1_norm = 0., capacitance_inverse_l1_norm = 0.;
