@@ -154,10 +154,14 @@ main()
   std::printf("A_0^{-1} b from the remembered one: %s\n",
               lu.solve_counts().second == recalled + 1 ? "yes" : "no");
   b(20) += 0.3;
-  recalled = lu.solve_counts().second;
+  recalled                       = lu.solve_counts().second;
+  const unsigned int substituted = lu.solve_counts().first;
   compare("b changed in a row not replaced", lu, a_three, b);
   std::printf("A_0^{-1} b by a substitution: %s\n",
-              lu.solve_counts().second == recalled ? "yes" : "no");
+              lu.solve_counts().second == recalled &&
+                  lu.solve_counts().first > substituted ?
+                "yes" :
+                "no");
   std::printf("factorisations %u, columns of Z computed %u\n",
               lu.counts().first,
               lu.counts().second);
@@ -178,5 +182,19 @@ main()
               lu.replace_rows(many, many_rows) ? "no" : "yes");
   std::printf("a singular change refused: %s\n",
               lu.replace_rows({9}, {base[8]}) ? "no" : "yes");
+  recalled = lu.solve_counts().second;
   compare("after the refusals", lu, base);
+  std::printf("b solved before recalled after a refused change: %s\n",
+              lu.solve_counts().second == recalled + 1 ? "yes" : "no");
+
+  // A new factorisation forgets every remembered b.
+  const unsigned int substitutions = lu.solve_counts().first;
+  lu.factorize(a_three);
+  recalled = lu.solve_counts().second;
+  compare("a new base", lu, a_three);
+  std::printf("b solved again after the new factorisation: %s\n",
+              lu.solve_counts().second == recalled &&
+                  lu.solve_counts().first > substitutions ?
+                "yes" :
+                "no");
 }

@@ -205,8 +205,8 @@ namespace mbfem
   {
     // With the states fixed the solution is affine in s: solved at s = 0
     // and s = 1, whose right-hand sides change only in the rows of pairs
-    // that switched (UpdatedLU then solves without a substitution), and
-    // interpolated at s_a.
+    // that switched (on the sparse path UpdatedLU then needs no
+    // substitution for A_0^{-1} b), and interpolated at s_a.
     segment.s_a = s_a;
     Vector<double> x_0, d_0;
     loads.set_fraction(start_loads, full_loads, 0.);
@@ -215,10 +215,36 @@ namespace mbfem
     loads.set_fraction(start_loads, full_loads, 1.);
     if (!solve(trial, segment.x_1, segment.d_1))
       return false;
-    segment.x_a = x_0;
-    segment.x_a.sadd(1. - s_a, s_a, segment.x_1);
-    segment.d_a = d_0;
-    segment.d_a.sadd(1. - s_a, s_a, segment.d_1);
+    if (s_a == 0.)
+      {
+        segment.x_a = x_0;
+        segment.d_a = d_0;
+      }
+    else
+      {
+        segment.x_a = x_0;
+        segment.x_a.sadd(1. - s_a, s_a, segment.x_1);
+        segment.d_a = d_0;
+        segment.d_a.sadd(1. - s_a, s_a, segment.d_1);
+        // The interpolation's rounding is relative to x_0 and d_0: where
+        // they are over a hundred times what the segment holds (a load
+        // that cancels the start's), s_a is solved for itself.
+        const auto larger = [](const Vector<double> &a,
+                               const Vector<double> &b,
+                               const Vector<double> &c) {
+          return a.linfty_norm() >
+                 100. * std::max(b.linfty_norm(), c.linfty_norm());
+        };
+        if (larger(x_0, segment.x_a, segment.x_1) ||
+            larger(d_0, segment.d_a, segment.d_1))
+          {
+            loads.set_fraction(start_loads, full_loads, s_a);
+            const bool solved = solve(trial, segment.x_a, segment.d_a);
+            loads.set_fraction(start_loads, full_loads, 1.);
+            if (!solved)
+              return false;
+          }
+      }
 
     const unsigned int n_r = pairs.size() * dim;
     segment.force_scale = segment.displacement_scale = 1e-300;

@@ -9,6 +9,18 @@
 
 namespace mbfem
 {
+  namespace internal
+  {
+    /**
+     * How many base solutions UpdatedLU remembers: the load path solves
+     * each state set at s = 0 and s = 1, the fast iteration at s = 1; two
+     * more keep those of an earlier state set.
+     */
+    constexpr unsigned int n_remembered = 4;
+  } // namespace internal
+
+
+
   bool
   UpdatedLU::factorize(const std::vector<Row> &rows)
   {
@@ -253,9 +265,12 @@ namespace mbfem
     std::vector<bool> is_changed(size(), false);
     for (const unsigned int i : changed)
       is_changed[i] = true;
-    for (const auto &[b_0, y_0] : base_solutions)
+    for (auto remembered = base_solutions.begin();
+         remembered != base_solutions.end();
+         ++remembered)
       {
-        bool same = true;
+        const auto &[b_0, y_0] = *remembered;
+        bool same              = true;
         for (unsigned int j = 0; j < size() && same; ++j)
           same = is_changed[j] || x(j) == b_0(j);
         if (!same)
@@ -267,6 +282,9 @@ namespace mbfem
             y.add(x(i) - b_0(i), z.at(i));
         x.swap(y);
         ++n_recalled;
+        // The most recently used first: the one dropped is the one unused
+        // the longest.
+        std::rotate(base_solutions.begin(), remembered, remembered + 1);
         return true;
       }
     return false;
@@ -286,7 +304,7 @@ namespace mbfem
         Vector<double> b = x;
         substitute(x, true);
         base_solutions.emplace(base_solutions.begin(), std::move(b), x);
-        if (base_solutions.size() > 4)
+        if (base_solutions.size() > internal::n_remembered)
           base_solutions.pop_back();
       }
     const unsigned int m = changed.size();

@@ -92,7 +92,8 @@ namespace mbfem
      * probes). Returns the backward error
      * |b - A x|_inf / (|A|_inf |x|_inf + |b|_inf) of the answer, which a
      * caller compares with what it can accept (a backward stable LU gives
-     * some 1e-16); 0 without @p refine.
+     * some 1e-16); 0 without @p refine. A refined solve remembers its
+     * A_0^{-1} b (mutable state: not for concurrent calls).
      */
     double
     solve(Vector<double> &x, const bool refine = true) const;
@@ -125,17 +126,19 @@ namespace mbfem
     counts() const;
 
     /**
-     * Substitutions with A_0's factors since construction, and solves
-     * whose y = A_0^{-1} b came from a remembered one instead.
+     * Calls of A_0's factors since construction (a refined one counts
+     * once), and solves whose y = A_0^{-1} b came from a remembered one
+     * instead.
      */
     std::pair<unsigned int, unsigned int>
     solve_counts() const;
 
   private:
     /**
-     * x = A^{-1} x by the formula, without refinement; with @p remember,
-     * y = A_0^{-1} b from a remembered one where it can, else by a refined
-     * substitution that is then remembered.
+     * x = A^{-1} x by the formula, not refined against A; with @p remember,
+     * y = A_0^{-1} b from a remembered one where it can, else by a
+     * substitution refined against A_0 (UMFPACK's own steps), which is then
+     * remembered.
      */
     void
     apply_inverse(Vector<double> &x, const bool remember = false) const;
