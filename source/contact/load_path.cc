@@ -215,16 +215,11 @@ namespace mbfem
     loads.set_fraction(start_loads, full_loads, 1.);
     if (!solve(trial, segment.x_1, segment.d_1))
       return false;
-    if (s_a == 0.)
+    segment.x_a = x_0;
+    segment.d_a = d_0;
+    if (s_a > 0.) // at s_a = 0, no 0 * x_1 (NaN where x_1 overflowed)
       {
-        segment.x_a = x_0;
-        segment.d_a = d_0;
-      }
-    else
-      {
-        segment.x_a = x_0;
         segment.x_a.sadd(1. - s_a, s_a, segment.x_1);
-        segment.d_a = d_0;
         segment.d_a.sadd(1. - s_a, s_a, segment.d_1);
         // The interpolation's rounding is relative to x_0 and d_0: where
         // they are over a hundred times what the segment holds (a load

@@ -27,12 +27,8 @@ namespace mbfem
     const unsigned int n = rows.size();
     z.clear();
     base_solutions.clear();
-    changed.clear();
-    difference.clear();
-    changed_row_norm.clear();
-    capacitance.reinit(0, 0);
-    change_l1_norm = z_l1_norm = capacitance_inverse_l1_norm = 0.;
-    is_factorized                                            = false;
+    forget_change();
+    is_factorized = false;
 
     DynamicSparsityPattern dsp(n, n);
     for (unsigned int i = 0; i < n; ++i)
@@ -126,12 +122,8 @@ namespace mbfem
   {
     Assert(is_factorized, ExcMessage("UpdatedLU: nothing factorised."));
     AssertDimension(indices.size(), rows.size());
-    changed.clear();
-    difference.clear();
-    changed_row_norm.clear();
-    capacitance.reinit(0, 0);
-    change_l1_norm = z_l1_norm = capacitance_inverse_l1_norm = 0.;
-    const unsigned int m                                     = indices.size();
+    forget_change();
+    const unsigned int m = indices.size();
     if (m == 0)
       return true;
     if (m > max_rank())
@@ -210,10 +202,7 @@ namespace mbfem
       }
     catch (const LACExceptions::ExcSingular &)
       {
-        changed.clear();
-        difference.clear();
-        changed_row_norm.clear();
-        capacitance.reinit(0, 0);
+        forget_change();
         return false;
       }
     // The norms of condition_bound().
@@ -238,14 +227,22 @@ namespace mbfem
     // caller's own LU decides.
     if (!(capacitance_inverse_l1_norm < 1e10 && condition_bound() < 1e12))
       {
-        changed.clear();
-        difference.clear();
-        changed_row_norm.clear();
-        capacitance.reinit(0, 0);
-        change_l1_norm = z_l1_norm = capacitance_inverse_l1_norm = 0.;
+        forget_change();
         return false;
       }
     return true;
+  }
+
+
+
+  void
+  UpdatedLU::forget_change()
+  {
+    changed.clear();
+    difference.clear();
+    changed_row_norm.clear();
+    capacitance.reinit(0, 0);
+    change_l1_norm = z_l1_norm = capacitance_inverse_l1_norm = 0.;
   }
 
 

@@ -150,6 +150,10 @@ namespace mbfem
     bool
     recall_base_solution(Vector<double> &x) const;
 
+    /** Back to A = A_0: no rows replaced (Z's columns are kept). */
+    void
+    forget_change();
+
     /** x = A_0^{-1} x by A_0's factors, counted. */
     void
     substitute(Vector<double> &x, const bool refine) const;
