@@ -156,6 +156,7 @@ namespace mbfem
     committed = initial;
     committed_displacement.assign(n_pairs, Tensor<1, dim>());
     committed_solution.reinit(0);
+    committed_solved     = false;
     current              = committed;
     current_displacement = committed_displacement;
     current_solution.reinit(0);
@@ -595,17 +596,18 @@ namespace mbfem
                                         unsigned int      &iterations,
                                         std::string       &failure)
   {
-    // From the last increment's answer where it carries load, as any
-    // incremental Newton method: its states are near the new ones (the
-    // cube's push: 13 steps from it against 14 from the bonded answer,
-    // the same states, and no factorisation of the bonded system, the
-    // densest of all: 2.4e10 flops in 3D). From the increment's bonded
-    // answer (every pair stuck) where nothing is loaded yet: Newton is
-    // local, and from the unloaded state it can end at an indeterminate
+    // From the last increment's answer, solved for these pairs and not
+    // all zero, as any incremental Newton method: its states are near the
+    // new ones (the cube's push: 13 steps from it against 14 from the
+    // bonded answer, the same states, and no factorisation of the bonded
+    // system, the densest of all: 2.4e10 flops on the cube). Else (a
+    // run's or a stage's first increment, whose new pairs hold no force)
+    // from the increment's bonded answer (every pair stuck): Newton is
+    // local, and from an unloaded state it can end at an indeterminate
     // answer, every pair slipping around a spinning block, which exists
     // below the limit but is not what the load drives.
     Vector<double> start, displacement;
-    if (committed_solution.size() > 0 && committed_solution.linfty_norm() > 0.)
+    if (committed_solved && committed_solution.linfty_norm() > 0.)
       start = committed_solution;
     else
       {
@@ -822,6 +824,7 @@ namespace mbfem
     committed              = current;
     committed_displacement = current_displacement;
     committed_solution     = current_solution;
+    committed_solved       = true;
   }
 
 

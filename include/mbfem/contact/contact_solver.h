@@ -624,6 +624,12 @@ namespace mbfem
     std::vector<Tensor<1, dim>> current_displacement;
     /** (rho, alpha) of the converged increment: the load path's start. */
     Vector<double> committed_solution;
+    /**
+     * Whether committed_solution was solved for these pairs (false after
+     * restart() and continue_from(), whose new pairs hold no force yet):
+     * Newton's method starts from it only then.
+     */
+    bool committed_solved = false;
 
     /** The load path: the loads of the increment at s = 1 and at s = 0. */
     IncrementLoads full_loads, start_loads;
