@@ -606,12 +606,13 @@ namespace mbfem
     // local, and from an unloaded state it can end at an indeterminate
     // answer, every pair slipping around a spinning block, which exists
     // below the limit but is not what the load drives.
-    Vector<double> start, displacement;
+    Vector<double> start;
     if (committed_solved && committed_solution.linfty_norm() > 0.)
       start = committed_solution;
     else
       {
-        Trial bonded = committed;
+        Vector<double> displacement;
+        Trial          bonded = committed;
         std::fill(bonded.state.begin(),
                   bonded.state.end(),
                   ContactState::stick);
