@@ -61,6 +61,9 @@ namespace mbfem
                                        id));
         Block<dim> &block = *blocks.back();
         block.extract_mesh(mesh);
+        const auto refinements = parameters.mesh.block_refinements.find(id);
+        if (refinements != parameters.mesh.block_refinements.end())
+          block.refine_mesh(refinements->second);
         check_cell_geometry(block.get_triangulation(),
                             block.get_mapping(),
                             block.get_fe().degree,
@@ -203,7 +206,11 @@ namespace mbfem
       {
         pcout << (blocks.size() == 1 ? "" : "  " + block->name() + ":\n")
               << "  cells: " << block->get_triangulation().n_active_cells()
-              << ", degrees of freedom: " << block->n_dofs() << "\n"
+              << ", degrees of freedom: " << block->n_dofs()
+              << (parameters.discretisation.block_degrees.empty() ?
+                    std::string() :
+                    ", FE_Q(" + std::to_string(block->get_fe().degree) + ")")
+              << "\n"
               << "  E = " << block->get_material().youngs_modulus
               << ", nu = " << block->get_material().poissons_ratio << "\n";
         const auto &free_modes = block->free_rigid_body_modes();

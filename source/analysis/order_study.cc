@@ -103,8 +103,10 @@ namespace mbfem
     DiscretisationParameters discretisation = parameters.discretisation;
     discretisation.degree                   = degree;
     discretisation.mapping_degree           = degree;
-    MeshParameters mesh                     = parameters.mesh;
-    mesh.initial_refinement                 = refinement;
+    discretisation.mapping_follows_degree   = false;
+    discretisation.block_degrees.clear();
+    MeshParameters mesh     = parameters.mesh;
+    mesh.initial_refinement = refinement;
 
     // The functions are evaluated at the end of the load history; the
     // study is of the discretisation, not of the path.

@@ -349,6 +349,18 @@ namespace mbfem
                              " in the mesh) has no material: list it "
                              "in 'Material/Block materials'."));
 
+    for (const auto &[entry, ids] :
+         {std::make_pair(std::string("Finite element/Block degrees"),
+                         &parameters.discretisation.block_degrees),
+          std::make_pair(std::string("Mesh/Block refinements"),
+                         &parameters.mesh.block_refinements)})
+      for (const auto &[id, value] : *ids)
+        AssertThrow(blocks.count(id) == 1,
+                    ExcMessage(entry + " lists block " + std::to_string(id) +
+                               ", which is not a block of the mesh, whose "
+                               "blocks are: " +
+                               list_text(blocks) + "."));
+
     const std::set<types::boundary_id> present =
       block_boundary_ids(mesh, excavated);
     const auto check = [&](const types::boundary_id id,

@@ -76,4 +76,39 @@ namespace mbfem
       }
     return ids;
   }
+
+
+
+  std::map<unsigned int, unsigned int>
+  parse_id_values(const std::string &text,
+                  const std::string &where,
+                  const unsigned int min,
+                  const unsigned int max)
+  {
+    std::map<unsigned int, unsigned int> values;
+    for (const auto &entry : split_list(text, ';', where))
+      {
+        const auto parts = split_list(entry, ':', where);
+        AssertThrow(parts.size() == 2,
+                    ExcMessage("'" + where + "': cannot read '" + entry +
+                               "'; write 'id: value', entries separated by "
+                               "';'."));
+        const auto ids = parse_id_list(parts[0], where, 255);
+        AssertThrow(ids.size() == 1,
+                    ExcMessage("'" + where + "': '" + entry +
+                               "' needs one block id before ':' (give each "
+                               "block its own entry, separated by ';')."));
+        const double value = parse_finite_number(parts[1], "'" + where + "'");
+        AssertThrow(value >= min && value <= max && value == std::floor(value),
+                    ExcMessage("'" + where + "': '" + entry + "': " + parts[1] +
+                               " is not a whole number from " +
+                               std::to_string(min) + " to " +
+                               std::to_string(max) + "."));
+        AssertThrow(
+          values.emplace(ids[0], static_cast<unsigned int>(value)).second,
+          ExcMessage("'" + where + "': block " + parts[0] +
+                     " is listed twice; give each block once."));
+      }
+    return values;
+  }
 } // namespace mbfem

@@ -1,5 +1,6 @@
 #include <mbfem/base/exceptions.h>
 #include <mbfem/base/parallel.h>
+#include <mbfem/base/text_input.h>
 #include <mbfem/block/block.h>
 #include <mbfem/block/flexibility.h>
 #include <mbfem/block/floating_modes.h>
@@ -37,6 +38,15 @@ namespace mbfem
         "Degree of the MappingQ that maps cells to their curved shape. 0 "
         "means the same as the polynomial degree, which keeps the optimal "
         "convergence rates on curved boundaries.");
+      prm.declare_entry(
+        "Block degrees",
+        "",
+        Patterns::Anything(),
+        "Degrees of single blocks that differ from 'Polynomial degree', "
+        "'id: p' separated by ';' (e.g. '1: 1; 2: 3'). With 'Mapping "
+        "degree = 0' each block's mapping follows its own degree. Blocks of "
+        "different degrees do not share nodes at their common faces: "
+        "declare those interfaces 'mortar' (Contact/Interfaces).");
     }
     prm.leave_subsection();
   }
@@ -52,8 +62,30 @@ namespace mbfem
       mapping_degree = prm.get_integer("Mapping degree");
       if (mapping_degree == 0)
         mapping_degree = degree;
+      mapping_follows_degree = (prm.get_integer("Mapping degree") == 0);
+      block_degrees          = parse_id_values(prm.get("Block degrees"),
+                                      "Finite element/Block degrees",
+                                      1,
+                                      4);
     }
     prm.leave_subsection();
+  }
+
+
+
+  unsigned int
+  DiscretisationParameters::degree_of(const types::material_id id) const
+  {
+    const auto entry = block_degrees.find(id);
+    return entry == block_degrees.end() ? degree : entry->second;
+  }
+
+
+
+  unsigned int
+  DiscretisationParameters::mapping_degree_of(const types::material_id id) const
+  {
+    return mapping_follows_degree ? degree_of(id) : mapping_degree;
   }
 
 
@@ -65,8 +97,8 @@ namespace mbfem
                     const types::material_id        id)
     : id(id)
     , material(material)
-    , fe(FE_Q<dim>(discretisation.degree), dim)
-    , mapping(discretisation.mapping_degree)
+    , fe(FE_Q<dim>(discretisation.degree_of(id)), dim)
+    , mapping(discretisation.mapping_degree_of(id))
     , direct_solver(solver_package)
   {}
 
@@ -86,6 +118,17 @@ namespace mbfem
   Block<dim>::extract_mesh(const Triangulation<dim> &mesh)
   {
     extract_block(mesh, id, triangulation);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::refine_mesh(const unsigned int times)
+  {
+    // Children keep their parent's boundary ids, so the faces shared with
+    // other blocks stay marked.
+    triangulation.refine_global(times);
   }
 
 

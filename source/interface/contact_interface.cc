@@ -2,6 +2,7 @@
 #include <mbfem/block/boundary_conditions.h>
 #include <mbfem/interface/contact_interface.h>
 #include <mbfem/interface/cross_points.h>
+#include <mbfem/interface/mortar.h>
 #include <mbfem/mesh/mesh.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -237,13 +238,18 @@ namespace mbfem
           InterfaceDeclaration declaration;
           declaration.description = entry;
           std::istringstream in(entry);
-          std::string        kind, sides;
-          in >> kind >> sides;
+          std::string        kind, sides, coupling, rest;
+          in >> kind >> sides >> coupling >> rest;
           const auto ids = Utilities::split_string_list(sides, ':');
           AssertThrow((kind == "blocks" || kind == "boundaries") &&
-                        ids.size() == 2,
+                        ids.size() == 2 &&
+                        (coupling.empty() || coupling == "mortar") &&
+                        rest.empty(),
                       ExcMessage("Contact/Interfaces: cannot read '" + entry +
-                                 "'; write 'blocks 1:2' or 'boundaries 3:4'."));
+                                 "'; write 'blocks 1:2' or 'boundaries 3:4', "
+                                 "followed by 'mortar' where the meshes of "
+                                 "the two sides do not match."));
+          declaration.mortar    = (coupling == "mortar");
           declaration.by_blocks = (kind == "blocks");
           AssertThrow(!(all_shared_faces && declaration.by_blocks),
                       ExcMessage("Contact/Interfaces: '" + entry +
@@ -326,6 +332,36 @@ namespace mbfem
 
 
 
+  template <int dim>
+  Tensor<2, dim>
+  frame_of_normal(const Tensor<1, dim> &normal)
+  {
+    Tensor<2, dim> frame;
+    frame[0] = normal / normal.norm();
+    if (dim == 2)
+      {
+        frame[1][0] = -frame[0][1];
+        frame[1][1] = frame[0][0];
+      }
+    else
+      {
+        // First tangent: normal x (the axis least aligned with it).
+        unsigned int axis = 0;
+        for (unsigned int d = 1; d < dim; ++d)
+          if (std::abs(frame[0][d]) < std::abs(frame[0][axis]))
+            axis = d;
+        Tensor<1, dim> e;
+        e[axis]           = 1.;
+        Tensor<1, dim> t1 = cross_product_3d(frame[0], e);
+        t1 /= t1.norm();
+        frame[1] = t1;
+        frame[2] = cross_product_3d(frame[0], t1);
+      }
+    return frame;
+  }
+
+
+
   namespace
   {
     /** A support point on one side of an interface, with its DoFs. */
@@ -395,36 +431,6 @@ namespace mbfem
                     nodes[it->second].normal += fe_face_values.normal_vector(q);
                   }
             }
-    }
-
-
-
-    template <int dim>
-    Tensor<2, dim>
-    make_frame(const Tensor<1, dim> &normal)
-    {
-      Tensor<2, dim> frame;
-      frame[0] = normal / normal.norm();
-      if (dim == 2)
-        {
-          frame[1][0] = -frame[0][1];
-          frame[1][1] = frame[0][0];
-        }
-      else
-        {
-          // First tangent: normal x (the axis least aligned with it).
-          unsigned int axis = 0;
-          for (unsigned int d = 1; d < dim; ++d)
-            if (std::abs(frame[0][d]) < std::abs(frame[0][axis]))
-              axis = d;
-          Tensor<1, dim> e;
-          e[axis]           = 1.;
-          Tensor<1, dim> t1 = cross_product_3d(frame[0], e);
-          t1 /= t1.norm();
-          frame[1] = t1;
-          frame[2] = cross_product_3d(frame[0], t1);
-        }
-      return frame;
     }
 
 
@@ -552,12 +558,12 @@ namespace mbfem
       pair.b.point   = b.point;
       if (d <= coincident)
         {
-          pair.frame       = make_frame(a.normal);
+          pair.frame       = frame_of_normal(a.normal);
           pair.initial_gap = 0.;
         }
       else
         {
-          pair.frame       = make_frame<dim>(b.point - a.point);
+          pair.frame       = frame_of_normal<dim>(b.point - a.point);
           pair.initial_gap = d;
         }
       pair.area = 0.5 * (a.area + b.area);
@@ -823,13 +829,30 @@ namespace mbfem
     for (unsigned int k = 0; k < parameters.interfaces.size(); ++k)
       {
         const unsigned int first = pairs.size();
-        pair_interface(blocks, parameters, k, coincident, pairs);
+        if (parameters.interfaces[k].mortar)
+          mortar_pairs(blocks,
+                       parameters.interfaces[k],
+                       k,
+                       std::max(coincident, parameters.search_distance),
+                       coincident,
+                       pairs);
+        else
+          pair_interface(blocks, parameters, k, coincident, pairs);
         assign_joint_set(parameters, k, pairs, first);
       }
     print_interfaces(parameters, pairs, pcout);
 
+    // The loops of cross-points are loops of nodes paired one to one; a
+    // mortar pair ties one node to several and stays out of them.
+    const auto first_mortar =
+      std::stable_partition(pairs.begin(), pairs.end(), [&](const auto &pair) {
+        return !parameters.interfaces[pair.interface].mortar;
+      });
+    std::vector<ContactPair<dim>> mortar(first_mortar, pairs.end());
+    pairs.erase(first_mortar, pairs.end());
     const CrossPointReport report =
       resolve_cross_points(pairs, parameters.interfaces);
+    pairs.insert(pairs.end(), mortar.begin(), mortar.end());
     if (report.n_merged > 0)
       pcout << "  " << report.n_points
             << " point(s) shared by three or more blocks: " << report.n_merged
@@ -862,6 +885,10 @@ namespace mbfem
 
   template struct ContactPair<2>;
   template struct ContactPair<3>;
+  template Tensor<2, 2>
+  frame_of_normal(const Tensor<1, 2> &);
+  template Tensor<2, 3>
+  frame_of_normal(const Tensor<1, 3> &);
   template std::vector<ContactPair<2>>
   find_contact_pairs(const std::vector<std::unique_ptr<Block<2>>> &,
                      ContactParameters &,

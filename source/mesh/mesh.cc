@@ -80,6 +80,15 @@ namespace mbfem
                         Patterns::Integer(0, 12),
                         "Number of times every cell is split (in two in each "
                         "direction) after the mesh is made.");
+      prm.declare_entry(
+        "Block refinements",
+        "",
+        Patterns::Anything(),
+        "Further global refinements of single blocks after they are taken "
+        "from the mesh, 'id: n' separated by ';' (e.g. '1: 1' halves the "
+        "cells of block 1 once more). The blocks' meshes then no longer "
+        "match at their common faces: declare those interfaces 'mortar' "
+        "(Contact/Interfaces).");
     }
     prm.leave_subsection();
   }
@@ -98,6 +107,10 @@ namespace mbfem
       generator_arguments = prm.get("Generator arguments");
       initial_refinement  = prm.get_integer("Initial global refinement");
       block_id_function   = prm.get("Block id function");
+      block_refinements   = parse_id_values(prm.get("Block refinements"),
+                                          "Mesh/Block refinements",
+                                          0,
+                                          6);
       circular_boundaries.clear();
       const std::string where = "Mesh/Circular boundaries";
       for (const auto &entry :

@@ -1,6 +1,7 @@
 #ifndef mbfem_base_text_input_h
 #define mbfem_base_text_input_h
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,17 @@ namespace mbfem
   parse_id_list(const std::string &text,
                 const std::string &where,
                 const unsigned int max = 4294967294u);
+
+  /**
+   * The entries 'id: n' of the list @p text (';' between them), each id a
+   * block's material id given once and each n a whole number from @p min
+   * to @p max: 'Finite element/Block degrees = 1: 3; 2: 1'.
+   */
+  std::map<unsigned int, unsigned int>
+  parse_id_values(const std::string &text,
+                  const std::string &where,
+                  const unsigned int min,
+                  const unsigned int max);
 } // namespace mbfem
 
 #endif

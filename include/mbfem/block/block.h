@@ -26,6 +26,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,8 +44,20 @@ namespace mbfem
     void
     parse_parameters(ParameterHandler &prm);
 
+    /** The degree of block @p id: its entry in block_degrees or degree. */
+    unsigned int
+    degree_of(const types::material_id id) const;
+
+    /** The mapping degree of block @p id. */
+    unsigned int
+    mapping_degree_of(const types::material_id id) const;
+
     unsigned int degree         = 2;
     unsigned int mapping_degree = 2;
+    /** 'Mapping degree = 0': each block's mapping has its own degree. */
+    bool mapping_follows_degree = true;
+    /** Block id -> degree, for the blocks that differ from degree. */
+    std::map<unsigned int, unsigned int> block_degrees;
   };
 
   /**
@@ -83,6 +96,13 @@ namespace mbfem
      */
     void
     extract_mesh(const Triangulation<dim> &mesh);
+
+    /**
+     * Refines the block's own mesh @p times more ('Mesh/Block refinements'):
+     * a finer block beside a coarse one, joined by a mortar interface.
+     */
+    void
+    refine_mesh(const unsigned int times);
 
     /**
      * Builds the mesh of @p parameters as the block's mesh: for a problem

@@ -35,6 +35,11 @@ namespace mbfem
     bool found = false;
     /** The joint set it belongs to (found interfaces), or empty. */
     std::string joint_set;
+    /**
+     * 'blocks 1:2 mortar': the meshes need not match, the pairs are the
+     * mortar side's multipliers (mortar.h) instead of facing nodes.
+     */
+    bool mortar = false;
   };
 
   /** Subsection "Contact": the interfaces and their Mohr-Coulomb data. */
@@ -199,6 +204,16 @@ namespace mbfem
     relative_displacement(
       const std::vector<std::unique_ptr<Block<dim>>> &blocks) const;
   };
+
+
+
+  /**
+   * The orthonormal frame of a pair whose normal is @p normal (any length):
+   * rows normal, then the tangents.
+   */
+  template <int dim>
+  Tensor<2, dim>
+  frame_of_normal(const Tensor<1, dim> &normal);
 
 
 

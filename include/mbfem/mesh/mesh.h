@@ -40,6 +40,9 @@ namespace mbfem
     /** Expression of x, y(, z) giving the block of the cell at that centre. */
     std::string block_id_function;
 
+    /** Block id -> refinements of that block after extraction. */
+    std::map<unsigned int, unsigned int> block_refinements;
+
     /** Boundary id -> centre of the circle (sphere) that face lies on. */
     std::map<types::boundary_id, std::vector<double>> circular_boundaries;
   };
