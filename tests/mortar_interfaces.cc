@@ -5,7 +5,8 @@
 //     the degrees of the two blocks varied. Both blocks are in uniform
 //     uniaxial stress, so every pair must carry exactly 1 MPa and no shear;
 //     node-to-node pairs would not (their nodes do not face each other).
-//     Checked to 1e-8 of the pressure (measured: 2e-11, round-off).
+//     Checked to 1e-8 of the pressure (measured: 2e-11, round-off), with
+//     the multipliers on the coarser side (the default) and on the finer.
 //  2. The weights reproduce every field that both sides represent: for a
 //     polynomial of the lower of the two degrees, sum_k w_k f(x_k) = f(x_j)
 //     at every pair, to 1e-10 (exact integration over the overlaps).
@@ -74,14 +75,18 @@ end
 
   template <int dim>
   void
-  patch_test(const unsigned int lower, const unsigned int upper)
+  patch_test(const unsigned int lower,
+             const unsigned int upper,
+             const std::string &side = "coarser")
   {
     const std::string file =
       SOURCE_DIR "/../parameters/mortar_patch_" + std::to_string(dim) + "d.prm";
     std::string text = read(file) + settings;
     text += "subsection Finite element\n  set Polynomial degree = 1\n"
             "  set Block degrees = 1: " +
-            std::to_string(lower) + "; 2: " + std::to_string(upper) + "\nend\n";
+            std::to_string(lower) + "; 2: " + std::to_string(upper) +
+            "\nend\nsubsection Contact\n  set Mortar side = " + side +
+            "\nend\n";
     mbfem::Parameters<dim> parameters;
     const auto             problem = run<dim>(text, parameters);
     const auto            &contact = *problem->get_contact();
@@ -105,7 +110,8 @@ end
         weights = std::max(weights, std::abs(f));
       }
     std::cout << dim << "D, p = " << lower << " below and " << upper
-              << " above: " << contact.pairs().size()
+              << " above, multipliers on the " << side
+              << " side: " << contact.pairs().size()
               << " pairs; pressure 1 MPa at every pair to 1e-8: "
               << (pressure < 1e-8 ? "yes" : "NO")
               << "; shear below 1e-8 of it: " << (shear < 1e-8 ? "yes" : "NO")
@@ -172,8 +178,10 @@ main(int argc, char *argv[])
   for (const auto &[lower, upper] : std::vector<std::pair<unsigned, unsigned>>{
          {1, 1}, {1, 2}, {2, 1}, {2, 2}, {1, 3}})
     patch_test<2>(lower, upper);
+  patch_test<2>(1, 2, "finer");
   for (const auto &[lower, upper] :
        std::vector<std::pair<unsigned, unsigned>>{{1, 1}, {1, 2}, {2, 2}})
     patch_test<3>(lower, upper);
+  patch_test<3>(1, 2, "finer");
   matching_is_node_to_node();
 }

@@ -88,6 +88,16 @@ namespace mbfem
         "Largest initial gap between the nodes of a pair. 0: only "
         "coincident nodes are paired.");
       prm.declare_entry(
+        "Mortar side",
+        "coarser",
+        Patterns::Selection("coarser|finer"),
+        "Which side of a mortar interface carries the contact forces (one "
+        "pair per node of it): the side with fewer nodes on the interface "
+        "or the one with more (side a where both have as many). The "
+        "coarser side gives smooth tractions and a state iteration that "
+        "settles; the finer one resolves the pressure better but its "
+        "shear oscillates where pairs stick (doc/mortar.md).");
+      prm.declare_entry(
         "Maximum iterations",
         "100",
         Patterns::Integer(1),
@@ -298,6 +308,7 @@ namespace mbfem
                              "declared interfaces take 'Friction "
                              "coefficient' etc. one by one."));
       search_distance          = prm.get_double("Search distance");
+      mortar_on_finer_side     = (prm.get("Mortar side") == "finer");
       max_iterations           = prm.get_integer("Maximum iterations");
       const std::string choice = prm.get("Formulation");
       formulation = (choice == "monolithic" ? Formulation::monolithic :
@@ -835,6 +846,7 @@ namespace mbfem
                        k,
                        std::max(coincident, parameters.search_distance),
                        coincident,
+                       parameters.mortar_on_finer_side,
                        pairs);
         else
           pair_interface(blocks, parameters, k, coincident, pairs);

@@ -11,6 +11,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 namespace mbfem
 {
@@ -163,8 +164,6 @@ namespace mbfem
                                  q);
             lumped(i) += phi_i * values.JxW(q);
             multipliers[of_face[i]].full_area += phi_i * values.JxW(q);
-            multipliers[of_face[i]].normal +=
-              phi_i * values.JxW(q) * values.normal_vector(q);
             for (unsigned int j = 0; j < n; ++j)
               mass(i, j) +=
                 phi_i *
@@ -219,7 +218,11 @@ namespace mbfem
       for (const auto &point : points)
         {
           for (unsigned int i = 0; i < nodes.size(); ++i)
-            phi[i] = base.shape_value(nodes[i].base, point.unit);
+            {
+              phi[i] = base.shape_value(nodes[i].base, point.unit);
+              multipliers[of_face[i]].normal +=
+                phi[i] * point.weight * point.normal;
+            }
           for (unsigned int k = 0; k < other_nodes.size(); ++k)
             phi_other[k] =
               other_base.shape_value(other_nodes[k].base, point.other_unit);
@@ -372,6 +375,44 @@ namespace mbfem
 
 
     /**
+     * 2D: where @p curve faces the point @p x of normal @p n: along the
+     * common normal, the bisector of n and the curve's outward normal at
+     * the foot (found from the projection along n). Across the gap between
+     * two curved surfaces the line along one side's normal meets the other
+     * off the facing point, so that a normal approach would count as slip:
+     * in Hertz's problem a shear of half the final one under the normal
+     * load alone. Node-to-node pairs face each other along the same common
+     * normal (contact_interface.cc). Returns eta, the distance along the
+     * direction, and the direction.
+     */
+    std::tuple<double, double, Tensor<1, 2>>
+    facing_point(const FaceCurve    &curve,
+                 const Point<2>     &x,
+                 const Tensor<1, 2> &n,
+                 const double        eta)
+    {
+      auto [foot, distance]  = intersect_line(curve, x, n, eta);
+      Tensor<1, 2> direction = n;
+      for (unsigned int it = 0; it < 20; ++it)
+        {
+          Tensor<1, 2> common = n - curve.normal(foot);
+          if (common.norm() < 1e-8)
+            break; // the surfaces do not face each other
+          common /= common.norm();
+          const auto [next, d] = intersect_line(curve, x, common, foot);
+          const bool settled   = std::abs(next - foot) < 1e-13;
+          foot                 = next;
+          distance             = d;
+          direction            = common;
+          if (settled)
+            break;
+        }
+      return {foot, distance, direction};
+    }
+
+
+
+    /**
      * 2D: the overlap of face @p s of the multiplier side with face @p o of
      * the other side, as Gauss points on the segments of s between the
      * projections of the other faces' ends (@p breaks, sorted).
@@ -447,17 +488,50 @@ namespace mbfem
           std::vector<OverlapPoint<2>> points;
           for (const unsigned int q : values.quadrature_point_indices())
             {
-              const auto [eta, d] = intersect_line(o_curve,
-                                                   values.quadrature_point(q),
-                                                   values.normal_vector(q),
-                                                   eta0);
-              if (std::abs(d) > reach)
-                continue;
-              points.push_back({s_curve.unit(xi[q][0]),
-                                values.JxW(q),
-                                values.normal_vector(q),
-                                o_curve.unit(eta),
-                                d});
+              const auto [eta, d, direction] =
+                facing_point(o_curve,
+                             values.quadrature_point(q),
+                             values.normal_vector(q),
+                             eta0);
+              const OverlapPoint<2> point{s_curve.unit(xi[q][0]),
+                                          values.JxW(q),
+                                          direction,
+                                          o_curve.unit(eta),
+                                          d};
+              if (eta >= -1e-10 && eta <= 1. + 1e-10)
+                {
+                  if (std::abs(d) <= reach)
+                    points.push_back(point);
+                  continue;
+                }
+              // Across a curved gap the common normal may reach a
+              // neighbour of the face the segment's middle faces.
+              for (const unsigned int c : candidates)
+                if (c != found)
+                  {
+                    const Block<2> &next = *blocks[other_faces[c].block];
+                    const FaceCurve curve{next.get_mapping(),
+                                          other_faces[c].cell,
+                                          other_faces[c].face,
+                                          centre_normal(next, other_faces[c])};
+                    const auto [eta_c, d_c, direction_c] =
+                      facing_point(curve,
+                                   values.quadrature_point(q),
+                                   values.normal_vector(q),
+                                   0.5);
+                    if (eta_c >= -1e-10 && eta_c <= 1. + 1e-10)
+                      {
+                        if (std::abs(d_c) <= reach)
+                          overlaps.emplace_back(c,
+                                                std::vector<OverlapPoint<2>>{
+                                                  {point.unit,
+                                                   point.weight,
+                                                   direction_c,
+                                                   curve.unit(eta_c),
+                                                   d_c}});
+                        break;
+                      }
+                  }
             }
           overlaps.emplace_back(found, std::move(points));
         }
@@ -749,18 +823,23 @@ namespace mbfem
                const unsigned int                              k,
                const double                                    reach,
                const double                                    coincident,
+               const bool                                      on_finer_side,
                std::vector<ContactPair<dim>>                  &pairs)
   {
     std::vector<SideFace<dim>> faces[2] = {
       collect_faces(blocks, declaration, 0),
       collect_faces(blocks, declaration, 1)};
-    // The multipliers live on the side with more nodes: the finer one.
+    // The multipliers live on the coarser side (or the finer one): the
+    // measurements behind the choice are in doc/mortar.md.
     unsigned int n_nodes[2] = {0, 0};
     for (unsigned int s = 0; s < 2; ++s)
       for (const auto &face : faces[s])
         n_nodes[s] += blocks[face.block]->get_fe().dofs_per_face / dim;
-    const unsigned int side = (n_nodes[1] > n_nodes[0] ? 1 : 0);
-    const auto        &own = faces[side], &other = faces[1 - side];
+    const unsigned int side =
+      (n_nodes[0] == n_nodes[1] ?
+         0 :
+         ((n_nodes[1] > n_nodes[0]) == on_finer_side ? 1 : 0));
+    const auto &own = faces[side], &other = faces[1 - side];
 
     std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int>
                                  index;
@@ -825,6 +904,7 @@ namespace mbfem
                const unsigned int,
                const double,
                const double,
+               const bool,
                std::vector<ContactPair<2>> &);
   template void
   mortar_pairs(const std::vector<std::unique_ptr<Block<3>>> &,
@@ -832,5 +912,6 @@ namespace mbfem
                const unsigned int,
                const double,
                const double,
+               const bool,
                std::vector<ContactPair<3>> &);
 } // namespace mbfem

@@ -63,6 +63,8 @@ namespace mbfem
     /** Joint sets of the found interfaces, by orientation. */
     std::vector<JointSet> joint_sets;
     double                search_distance = 0.;
+    /** 'Mortar side = finer': the multipliers on the side with more nodes. */
+    bool mortar_on_finer_side = false;
 
     /** Whether the input declares any contact interface. */
     bool

@@ -14,8 +14,9 @@ namespace mbfem
   /**
    * The pairs of mortar interface @p k ('blocks 1:2 mortar', 'boundaries
    * 3:4 mortar'; doc/mortar.md), appended to @p pairs. The meshes of the two
-   * sides need not match: one side (the one with more nodes on the
-   * interface) carries the contact forces as Lagrange multipliers in the
+   * sides need not match: one side (the one with fewer nodes on the
+   * interface, or with more if @p on_finer_side) carries the contact
+   * forces as Lagrange multipliers in the
    * dual basis of its trace, one pair per node of it; the other side's
    * displacement enters each pair as the weighted sum sum_k (M_jk / D_j)
    * u_k, with
@@ -38,6 +39,7 @@ namespace mbfem
                const unsigned int                              k,
                const double                                    reach,
                const double                                    coincident,
+               const bool                                      on_finer_side,
                std::vector<ContactPair<dim>>                  &pairs);
 } // namespace mbfem
 
