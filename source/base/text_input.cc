@@ -93,7 +93,7 @@ namespace mbfem
                     ExcMessage("'" + where + "': cannot read '" + entry +
                                "'; write 'id: value', entries separated by "
                                "';'."));
-        const auto ids = parse_id_list(parts[0], where, 255);
+        const auto ids = parse_id_list(parts[0], where);
         AssertThrow(ids.size() == 1,
                     ExcMessage("'" + where + "': '" + entry +
                                "' needs one block id before ':' (give each "

@@ -150,8 +150,7 @@ namespace mbfem
       FEFaceValues<dim>     values(block.get_mapping(),
                                fe,
                                quadrature,
-                               update_values | update_JxW_values |
-                                 update_normal_vectors);
+                               update_values | update_JxW_values);
       values.reinit(face.cell, face.face);
       const unsigned int n = nodes.size();
       FullMatrix<double> mass(n, n), dual(n, n);
@@ -674,8 +673,13 @@ namespace mbfem
     void
     check_flat(const SideFace<3> &face, const Tensor<1, 3> &normal)
     {
-      bool flat = (face.cell->face(face.face)->manifold_id() ==
-                   numbers::flat_manifold_id);
+      // The edges too: a face beside a curved boundary keeps the curved
+      // manifold on its lines (mesh.cc), which MappingQ follows.
+      const auto cell_face = face.cell->face(face.face);
+      bool       flat = (cell_face->manifold_id() == numbers::flat_manifold_id);
+      for (unsigned int l = 0; l < cell_face->n_lines(); ++l)
+        flat &=
+          (cell_face->line(l)->manifold_id() == numbers::flat_manifold_id);
       for (const auto &vertex : face.vertices)
         flat &=
           std::abs((vertex - face.centre) * normal) <= 1e-10 * face.diameter;
@@ -800,9 +804,12 @@ namespace mbfem
                   ExcMessage("Mortar interface '" + description +
                              "': the node at (" + where.str() + ") faces " +
                              std::to_string(blocks.size()) +
-                             " blocks of the other side. Declare the "
-                             "interface block by block ('blocks 1:2 "
-                             "mortar')."));
+                             " blocks of the other side. Give each block of "
+                             "the other side its own boundary id and "
+                             "declare one interface per block ('boundaries "
+                             "3:4 mortar; boundaries 3:5 mortar'), or "
+                             "'blocks 1:2 mortar' where they share faces in "
+                             "the mesh."));
       pair.b.block     = *blocks.begin();
       pair.b.point     = facing;
       pair.frame       = frame_of_normal(j.normal);
@@ -831,10 +838,16 @@ namespace mbfem
       collect_faces(blocks, declaration, 1)};
     // The multipliers live on the coarser side (or the finer one): the
     // measurements behind the choice are in doc/mortar.md.
+    // Distinct nodes: a node shared by several faces counts once.
     unsigned int n_nodes[2] = {0, 0};
     for (unsigned int s = 0; s < 2; ++s)
-      for (const auto &face : faces[s])
-        n_nodes[s] += blocks[face.block]->get_fe().dofs_per_face / dim;
+      {
+        std::set<std::pair<unsigned int, types::global_dof_index>> distinct;
+        for (const auto &face : faces[s])
+          for (const auto &node : face_nodes(*blocks[face.block], face))
+            distinct.emplace(face.block, node.dofs[0]);
+        n_nodes[s] = distinct.size();
+      }
     const unsigned int side =
       (n_nodes[0] == n_nodes[1] ?
          0 :
