@@ -24,9 +24,10 @@ namespace mbfem
       unsigned int                                   block;
       typename DoFHandler<dim>::active_cell_iterator cell;
       unsigned int                                   face;
-      /** Corners of the face, and its centre. */
+      /** Corners of the face, its centre and outward normal there. */
       std::vector<Point<dim>> vertices;
       Point<dim>              centre;
+      Tensor<1, dim>          normal;
       double                  diameter = 0.;
     };
 
@@ -78,13 +79,19 @@ namespace mbfem
             continue;
           const types::boundary_id id =
             (declaration.by_blocks ? interface_boundary_id(other) : own);
+          FEFaceValues<dim> centre(blocks[b]->get_mapping(),
+                                   blocks[b]->get_fe(),
+                                   QGauss<dim - 1>(1),
+                                   update_normal_vectors);
           for (const auto &cell :
                blocks[b]->get_dof_handler().active_cell_iterators())
             for (const unsigned int f : cell->face_indices())
               if (cell->face(f)->at_boundary() &&
                   cell->face(f)->boundary_id() == id)
                 {
-                  SideFace<dim> face{b, cell, f, {}, Point<dim>(), 0.};
+                  centre.reinit(cell, f);
+                  SideFace<dim> face{
+                    b, cell, f, {}, Point<dim>(), centre.normal_vector(0), 0.};
                   for (const unsigned int v : cell->face(f)->vertex_indices())
                     face.vertices.push_back(cell->face(f)->vertex(v));
                   face.centre   = cell->face(f)->center();
@@ -308,22 +315,6 @@ namespace mbfem
 
 
 
-    /** The outward normal of face @p face at its centre. */
-    template <int dim>
-    Tensor<1, dim>
-    centre_normal(const Block<dim> &block, const SideFace<dim> &face)
-    {
-      const QGauss<dim - 1> centre(1);
-      FEFaceValues<dim>     values(block.get_mapping(),
-                               block.get_fe(),
-                               centre,
-                               update_normal_vectors);
-      values.reinit(face.cell, face.face);
-      return values.normal_vector(0);
-    }
-
-
-
     /**
      * 2D: xi on @p curve of the point whose normal passes through @p x
      * (Gauss-Newton on (x - x(xi)).t(xi) = 0), and the distance along it.
@@ -448,7 +439,7 @@ namespace mbfem
               const FaceCurve o_curve{other.get_mapping(),
                                       other_faces[c].cell,
                                       other_faces[c].face,
-                                      centre_normal(other, other_faces[c])};
+                                      other_faces[c].normal};
               const auto [eta, d] = intersect_line(o_curve, x, n, 0.5);
               if (eta >= -1e-10 && eta <= 1. + 1e-10 && std::abs(d) <= reach &&
                   std::abs(d) < best)
@@ -483,7 +474,7 @@ namespace mbfem
           const FaceCurve              o_curve{other.get_mapping(),
                                   other_faces[found].cell,
                                   other_faces[found].face,
-                                  centre_normal(other, other_faces[found])};
+                                  other_faces[found].normal};
           std::vector<OverlapPoint<2>> points;
           for (const unsigned int q : values.quadrature_point_indices())
             {
@@ -512,7 +503,7 @@ namespace mbfem
                     const FaceCurve curve{next.get_mapping(),
                                           other_faces[c].cell,
                                           other_faces[c].face,
-                                          centre_normal(next, other_faces[c])};
+                                          other_faces[c].normal};
                     const auto [eta_c, d_c, direction_c] =
                       facing_point(curve,
                                    values.quadrature_point(q),
@@ -556,10 +547,7 @@ namespace mbfem
                      const double                                  reach)
     {
       const Block<2> &side = *blocks[s.block];
-      const FaceCurve s_curve{side.get_mapping(),
-                              s.cell,
-                              s.face,
-                              centre_normal(side, s)};
+      const FaceCurve s_curve{side.get_mapping(), s.cell, s.face, s.normal};
       // The segments end where the normals through the other faces' ends
       // cross this face: between them the integrand is one polynomial.
       std::vector<double> breaks{0., 1.};
@@ -704,7 +692,7 @@ namespace mbfem
                      const double                                  reach)
     {
       const Block<3>    &side = *blocks[s.block];
-      const Tensor<1, 3> n    = centre_normal(side, s);
+      const Tensor<1, 3> n    = s.normal;
       check_flat(s, n);
       Tensor<1, 3> t1 = s.vertices[1] - s.vertices[0];
       t1 -= (t1 * n) * n;
@@ -718,7 +706,7 @@ namespace mbfem
         {
           const SideFace<3> &o        = other_faces[c];
           const Block<3>    &other    = *blocks[o.block];
-          const Tensor<1, 3> o_normal = centre_normal(other, o);
+          const Tensor<1, 3> o_normal = o.normal;
           // Exact where the faces are parallelograms.
           const Quadrature<2> triangle_rule =
             duffy_triangle(side.get_fe().degree + other.get_fe().degree + 2);
