@@ -1,11 +1,14 @@
 #include <mbfem/analysis/block_measures.h>
+#include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/analysis/order_study.h>
 #include <mbfem/base/parallel.h>
 #include <mbfem/base/parameters.h>
 #include <mbfem/base/text_input.h>
+#include <mbfem/mesh/mesh.h>
 
 #include <deal.II/base/timer.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -40,6 +43,17 @@ namespace mbfem
         "where the exact solution lies in the finite element space (a "
         "polynomial of degree <= p) the error is only the solver's round-off, "
         "which grows with the number of unknowns.");
+      prm.declare_entry(
+        "Block degrees",
+        "same",
+        Patterns::Selection("same|all combinations"),
+        "Models of several blocks (each is run whole, contact included, and "
+        "the table has the errors of every block): 'same' gives every block "
+        "each degree of 'Polynomial degrees' in turn; 'all combinations' "
+        "every assignment of those degrees to the blocks (n_degrees^n_blocks "
+        "rows per level, at most 64). 'Finite element/Block degrees' is "
+        "ignored in an order study; 'Mesh/Block refinements' is added to each "
+        "level. A one-block model ignores this.");
       prm.declare_entry("Table file",
                         "order_study.csv",
                         Patterns::Anything(),
@@ -66,6 +80,7 @@ namespace mbfem
                          "Order study/Refinement levels"))
         refinements.push_back(r);
       table_file      = prm.get("Table file");
+      block_degrees   = prm.get("Block degrees");
       round_off_floor = prm.get_double("Round-off floor");
     }
     prm.leave_subsection();
@@ -96,9 +111,60 @@ namespace mbfem
 
 
   template <int dim>
+  std::vector<std::vector<unsigned int>>
+  OrderStudy<dim>::degree_cases() const
+  {
+    const std::vector<unsigned int> &degrees  = parameters.order_study.degrees;
+    const unsigned int               n_blocks = block_ids.size();
+    std::vector<std::vector<unsigned int>> cases;
+    if (n_blocks <= 1 || parameters.order_study.block_degrees == "same")
+      {
+        for (const unsigned int p : degrees)
+          cases.emplace_back(std::max(n_blocks, 1u), p);
+        return cases;
+      }
+    const double n_cases = std::pow(double(degrees.size()), double(n_blocks));
+    AssertThrow(n_cases <= 64,
+                ExcMessage("Order study/Block degrees = all combinations: " +
+                           std::to_string(degrees.size()) + " degrees over " +
+                           std::to_string(n_blocks) + " blocks make " +
+                           std::to_string(static_cast<long>(n_cases)) +
+                           " combinations per level (at most 64). List fewer "
+                           "'Polynomial degrees', or use 'same'."));
+    // Like an odometer: the last block's degree varies fastest.
+    std::vector<unsigned int> index(n_blocks, 0);
+    for (unsigned int c = 0; c < static_cast<unsigned int>(n_cases); ++c)
+      {
+        std::vector<unsigned int> combination;
+        for (const unsigned int i : index)
+          combination.push_back(degrees[i]);
+        cases.push_back(combination);
+        for (int b = n_blocks - 1; b >= 0; --b)
+          if (++index[b] < degrees.size())
+            break;
+          else
+            index[b] = 0;
+      }
+    return cases;
+  }
+
+
+
+  template <int dim>
   OrderStudyRow
-  OrderStudy<dim>::solve_one(const unsigned int degree,
-                             const unsigned int refinement) const
+  OrderStudy<dim>::solve_one(const std::vector<unsigned int> &degrees,
+                             const unsigned int               refinement) const
+  {
+    return block_ids.size() > 1 ? solve_model(degrees, refinement) :
+                                  solve_block(degrees[0], refinement);
+  }
+
+
+
+  template <int dim>
+  OrderStudyRow
+  OrderStudy<dim>::solve_block(const unsigned int degree,
+                               const unsigned int refinement) const
   {
     DiscretisationParameters discretisation = parameters.discretisation;
     discretisation.degree                   = degree;
@@ -148,15 +214,122 @@ namespace mbfem
                            "that its square overflows); check the "
                            "functions."));
 
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    return {degree,
-            refinement,
-            block.get_triangulation().n_active_cells(),
-            static_cast<unsigned int>(block.n_dofs()),
-            errors.displacement_relative,
-            errors.stress_relative,
-            nan,
-            nan};
+    OrderStudyRow row;
+    row.degrees                  = {degree};
+    row.refinement               = refinement;
+    row.n_cells                  = block.get_triangulation().n_active_cells();
+    row.n_dofs                   = block.n_dofs();
+    row.total.displacement_error = errors.displacement_relative;
+    row.total.stress_error       = errors.stress_relative;
+    return row;
+  }
+
+
+
+  namespace
+  {
+    /** "1/3/2": the degrees of a row's blocks. */
+    std::string
+    degrees_text(const std::vector<unsigned int> &degrees,
+                 const char                      *separator)
+    {
+      std::string text;
+      for (unsigned int b = 0; b < degrees.size(); ++b)
+        text += (b > 0 ? separator : "") + std::to_string(degrees[b]);
+      return text;
+    }
+
+
+
+    /**
+     * Relative errors of the whole model from those of its blocks: the
+     * blocks' squared absolute errors and squared exact norms summed.
+     */
+    OrderStudyErrors
+    combine(const std::vector<ErrorNorms> &blocks)
+    {
+      double u_error2 = 0., u_norm2 = 0., s_error2 = 0., s_norm2 = 0.;
+      for (const ErrorNorms &e : blocks)
+        {
+          u_error2 += e.displacement * e.displacement;
+          s_error2 += e.stress * e.stress;
+          if (e.displacement_relative > 0.)
+            u_norm2 += std::pow(e.displacement / e.displacement_relative, 2);
+          if (e.stress_relative > 0.)
+            s_norm2 += std::pow(e.stress / e.stress_relative, 2);
+        }
+      OrderStudyErrors total;
+      total.displacement_error =
+        std::sqrt(u_error2 / std::max(u_norm2, 1e-300));
+      total.stress_error = std::sqrt(s_error2 / std::max(s_norm2, 1e-300));
+      return total;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  OrderStudyRow
+  OrderStudy<dim>::solve_model(const std::vector<unsigned int> &degrees,
+                               const unsigned int refinement) const
+  {
+    Parameters<dim> model = parameters;
+    model.run.mode        = "simulation";
+    model.run.test_mode   = true; // no timings: the run is silent anyway
+    model.mesh.initial_refinement               = refinement;
+    model.discretisation.mapping_follows_degree = true;
+    model.discretisation.block_degrees.clear();
+    for (unsigned int b = 0; b < block_ids.size(); ++b)
+      model.discretisation.block_degrees[block_ids[b]] = degrees[b];
+    model.output.base_name = parameters.output.base_name + "-p" +
+                             degrees_text(degrees, "_") + "-level" +
+                             std::to_string(refinement);
+
+    // The run prints nothing; a failure ends the study with its message
+    // (and exit code) after the line that names the case.
+    ConditionalOStream    silent(std::cout, false);
+    MultiBodyProblem<dim> problem(model, silent);
+    try
+      {
+        problem.run();
+      }
+    catch (...)
+      {
+        pcout << "  the case p = " << degrees_text(degrees, "/") << ", level "
+              << refinement << " failed (its output is "
+              << model.output.base_name << "-* in " << model.output.directory
+              << "):" << std::endl;
+        throw;
+      }
+
+    const double time =
+      parameters.load_history.time(parameters.load_history.n_increments);
+    parameters.exact_solution.displacement->set_time(time);
+    parameters.exact_solution.stress->set_time(time);
+    OrderStudyRow row;
+    row.degrees    = degrees;
+    row.refinement = refinement;
+    std::vector<ErrorNorms> errors;
+    for (const auto &block : problem.get_blocks())
+      {
+        errors.push_back(compute_errors(*block,
+                                        *parameters.exact_solution.displacement,
+                                        *parameters.exact_solution.stress));
+        row.n_cells += block->get_triangulation().n_active_cells();
+        row.n_dofs += block->n_dofs();
+        OrderStudyErrors e;
+        e.displacement_error = errors.back().displacement_relative;
+        e.stress_error       = errors.back().stress_relative;
+        row.blocks.push_back(e);
+      }
+    row.total = combine(errors);
+    AssertThrow(std::isfinite(row.total.displacement_error) &&
+                  std::isfinite(row.total.stress_error),
+                ExcMessage("Order study, p = " + degrees_text(degrees, "/") +
+                           ", refinement level " + std::to_string(refinement) +
+                           ": the L2 error against 'Exact solution' is not "
+                           "finite; check its functions."));
+    return row;
   }
 
 
@@ -173,16 +346,26 @@ namespace mbfem
         return std::numeric_limits<double>::quiet_NaN();
       return std::log2(e_coarse / e_fine) / levels;
     };
-    for (unsigned int i = 1; i < rows.size(); ++i)
-      if (rows[i].degree == rows[i - 1].degree)
-        {
-          const double levels = rows[i].refinement - rows[i - 1].refinement;
-          rows[i].displacement_rate = rate(rows[i - 1].displacement_error,
-                                           rows[i].displacement_error,
-                                           levels);
-          rows[i].stress_rate =
-            rate(rows[i - 1].stress_error, rows[i].stress_error, levels);
-        }
+    const auto set_rates = [&rate](const OrderStudyErrors &coarse,
+                                   OrderStudyErrors       &fine,
+                                   const double            levels) {
+      fine.displacement_rate =
+        rate(coarse.displacement_error, fine.displacement_error, levels);
+      fine.stress_rate = rate(coarse.stress_error, fine.stress_error, levels);
+    };
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (unsigned int i = 0; i < rows.size(); ++i)
+      {
+        rows[i].total.displacement_rate = rows[i].total.stress_rate = nan;
+        for (auto &block : rows[i].blocks)
+          block.displacement_rate = block.stress_rate = nan;
+        if (i == 0 || rows[i].degrees != rows[i - 1].degrees)
+          continue;
+        const double levels = rows[i].refinement - rows[i - 1].refinement;
+        set_rates(rows[i - 1].total, rows[i].total, levels);
+        for (unsigned int b = 0; b < rows[i].blocks.size(); ++b)
+          set_rates(rows[i - 1].blocks[b], rows[i].blocks[b], levels);
+      }
   }
 
 
@@ -206,6 +389,8 @@ namespace mbfem
   void
   OrderStudy<dim>::print_table(const std::vector<OrderStudyRow> &rows) const
   {
+    if (block_ids.size() > 1)
+      return print_block_table(rows);
     pcout << "\n"
           << "   p  level    cells     DoFs   L2 error u  rate   "
              "L2 error sigma  rate\n";
@@ -215,14 +400,14 @@ namespace mbfem
         std::snprintf(line,
                       sizeof(line),
                       "%4u %6u %8u %8u   %10.3e %5s   %14.3e %5s\n",
-                      row.degree,
+                      row.degrees[0],
                       row.refinement,
                       row.n_cells,
                       row.n_dofs,
-                      row.displacement_error,
-                      format("%.2f", row.displacement_rate).c_str(),
-                      row.stress_error,
-                      format("%.2f", row.stress_rate).c_str());
+                      row.total.displacement_error,
+                      format("%.2f", row.total.displacement_rate).c_str(),
+                      row.total.stress_error,
+                      format("%.2f", row.total.stress_rate).c_str());
         pcout << line;
       }
     pcout << "  (relative L2 errors; rate = log2 of the error ratio between "
@@ -235,26 +420,118 @@ namespace mbfem
 
   template <int dim>
   void
-  OrderStudy<dim>::write_csv(const std::vector<OrderStudyRow> &rows) const
+  OrderStudy<dim>::print_block_table(
+    const std::vector<OrderStudyRow> &rows) const
   {
-    std::ostringstream csv;
-    csv << "degree,refinement,cells,dofs,displacement_error,"
-           "displacement_rate,stress_error,stress_rate\n";
+    // The model's errors and rates first, then each block's.
+    pcout << "\n  degrees p of blocks";
+    for (const auto id : block_ids)
+      pcout << " " << static_cast<unsigned int>(id);
+    pcout << "; relative L2 errors of the model, then of each block\n";
+    std::string header = "  p        level     DoFs    u model  rate  "
+                         "sigma model  rate";
+    for (const auto id : block_ids)
+      {
+        const std::string b = std::to_string(id);
+        char              column[128];
+        std::snprintf(column,
+                      sizeof(column),
+                      "  %8s  rate  %10s  rate",
+                      ("u " + b).c_str(),
+                      ("sigma " + b).c_str());
+        header += column;
+      }
+    pcout << header << "\n";
     for (const auto &row : rows)
       {
         char line[256];
         std::snprintf(line,
                       sizeof(line),
-                      "%u,%u,%u,%u,%.6e,%s,%.6e,%s\n",
-                      row.degree,
+                      "  %-8s %5u %8u  %9.3e %5s  %11.3e %5s",
+                      degrees_text(row.degrees, "/").c_str(),
+                      row.refinement,
+                      row.n_dofs,
+                      row.total.displacement_error,
+                      format("%.2f", row.total.displacement_rate).c_str(),
+                      row.total.stress_error,
+                      format("%.2f", row.total.stress_rate).c_str());
+        pcout << line;
+        for (const auto &block : row.blocks)
+          {
+            std::snprintf(line,
+                          sizeof(line),
+                          "  %8.2e %5s  %10.2e %5s",
+                          block.displacement_error,
+                          format("%.2f", block.displacement_rate).c_str(),
+                          block.stress_error,
+                          format("%.2f", block.stress_rate).c_str());
+            pcout << line;
+          }
+        pcout << "\n";
+      }
+    pcout << "  (rate = log2 of the error ratio between levels; '-' where an "
+             "error is below the\n   round-off floor "
+          << parameters.order_study.round_off_floor
+          << " and no rate can be observed)\n";
+  }
+
+
+
+  template <int dim>
+  void
+  OrderStudy<dim>::write_csv(const std::vector<OrderStudyRow> &rows) const
+  {
+    // A one-block table keeps its columns; a model of several blocks adds
+    // each block's degree and errors (columns named by block id).
+    const bool         several = block_ids.size() > 1;
+    std::ostringstream csv;
+    csv << (several ? "degrees" : "degree")
+        << ",refinement,cells,dofs,displacement_error,"
+           "displacement_rate,stress_error,stress_rate";
+    if (several)
+      {
+        for (const auto id : block_ids)
+          csv << ",degree_" << static_cast<unsigned int>(id);
+        for (const auto id : block_ids)
+          {
+            const std::string b = std::to_string(id);
+            csv << ",displacement_error_" << b << ",displacement_rate_" << b
+                << ",stress_error_" << b << ",stress_rate_" << b;
+          }
+      }
+    csv << "\n";
+    for (const auto &row : rows)
+      {
+        char line[256];
+        std::snprintf(line,
+                      sizeof(line),
+                      "%s,%u,%u,%u,%.6e,%s,%.6e,%s",
+                      degrees_text(row.degrees, "/").c_str(),
                       row.refinement,
                       row.n_cells,
                       row.n_dofs,
-                      row.displacement_error,
-                      format("%.4f", row.displacement_rate).c_str(),
-                      row.stress_error,
-                      format("%.4f", row.stress_rate).c_str());
+                      row.total.displacement_error,
+                      format("%.4f", row.total.displacement_rate).c_str(),
+                      row.total.stress_error,
+                      format("%.4f", row.total.stress_rate).c_str());
         csv << line;
+        if (several)
+          {
+            for (const unsigned int p : row.degrees)
+              csv << "," << p;
+            for (const auto &block : row.blocks)
+              {
+                std::snprintf(line,
+                              sizeof(line),
+                              ",%.6e,%s,%.6e,%s",
+                              block.displacement_error,
+                              format("%.4f", block.displacement_rate).c_str(),
+                              block.stress_error,
+                              format("%.4f", block.stress_rate).c_str());
+                csv << line;
+              }
+          }
+        csv << "\n";
       }
     create_output_directory(parameters.output.directory);
     const std::string path =
@@ -270,18 +547,23 @@ namespace mbfem
   std::vector<OrderStudyRow>
   OrderStudy<dim>::solve_all(const Timer &timer) const
   {
-    std::vector<std::pair<unsigned int, unsigned int>> cases;
-    for (const auto p : parameters.order_study.degrees)
+    std::vector<std::pair<std::vector<unsigned int>, unsigned int>> cases;
+    for (const auto &degrees : degree_cases())
       for (const auto r : parameters.order_study.refinements)
-        cases.emplace_back(p, r);
+        cases.emplace_back(degrees, r);
 
-    // Under mpirun the cases are independent: each rank solves its share
-    // (balanced by cells x DoFs per cell, 2^(dim r) (p + 1)^dim), and the
-    // rows go from the rank that computed each to all.
-    const unsigned int  n_ranks = Parallel::n_ranks();
+    // Under mpirun the cases of a one-block study are independent: each
+    // rank solves its share (balanced by cells x DoFs per cell,
+    // 2^(dim r) (p + 1)^dim), and the rows go from the rank that computed
+    // each to all. A model of several blocks is shared out by blocks
+    // instead (MultiBodyProblem), so every rank takes part in every case.
+    const bool          by_cases = block_ids.size() <= 1;
+    const unsigned int  n_ranks  = by_cases ? Parallel::n_ranks() : 1;
     std::vector<double> costs;
-    for (const auto &[p, r] : cases)
-      costs.push_back(std::pow(2., dim * r) * std::pow(p + 1., dim));
+    for (const auto &[degrees, r] : cases)
+      costs.push_back(
+        std::pow(2., dim * r) *
+        std::pow(*std::max_element(degrees.begin(), degrees.end()) + 1., dim));
     const std::vector<unsigned int> owners =
       Parallel::assign_owners(costs, n_ranks);
     const unsigned int rank =
@@ -295,10 +577,10 @@ namespace mbfem
     for (unsigned int i = 0; i < cases.size(); ++i)
       if (owners[i] == rank)
         {
-          const auto &[p, r] = cases[i];
+          const auto &[degrees, r] = cases[i];
           try
             {
-              rows[i] = solve_one(p, r);
+              rows[i] = solve_one(degrees, r);
             }
           catch (...)
             {
@@ -307,8 +589,9 @@ namespace mbfem
               break;
             }
           if (!parameters.run.test_mode && n_ranks == 1)
-            pcout << "  p = " << p << ", level " << r << ": " << rows[i].n_dofs
-                  << " DoFs, " << timer.wall_time() << " s so far" << std::endl;
+            pcout << "  p = " << degrees_text(degrees, "/") << ", level " << r
+                  << ": " << rows[i].n_dofs << " DoFs, " << timer.wall_time()
+                  << " s so far" << std::endl;
         }
     if (n_ranks > 1)
       first_failure = Utilities::MPI::min(first_failure, MPI_COMM_WORLD);
@@ -318,27 +601,26 @@ namespace mbfem
       });
     if (n_ranks > 1)
       {
-        const double nan = std::numeric_limits<double>::quiet_NaN();
         for (unsigned int i = 0; i < cases.size(); ++i)
           {
-            std::array<double, 6> values = {{double(rows[i].degree),
-                                             double(rows[i].refinement),
-                                             double(rows[i].n_cells),
-                                             double(rows[i].n_dofs),
-                                             rows[i].displacement_error,
-                                             rows[i].stress_error}};
+            std::array<double, 6> values = {
+              {double(rows[i].degrees.empty() ? 0 : rows[i].degrees[0]),
+               double(rows[i].refinement),
+               double(rows[i].n_cells),
+               double(rows[i].n_dofs),
+               rows[i].total.displacement_error,
+               rows[i].total.stress_error}};
             Parallel::broadcast(MPI_COMM_WORLD,
                                 owners[i],
                                 values.data(),
                                 values.size());
-            rows[i] = {static_cast<unsigned int>(values[0]),
-                       static_cast<unsigned int>(values[1]),
-                       static_cast<unsigned int>(values[2]),
-                       static_cast<unsigned int>(values[3]),
-                       values[4],
-                       values[5],
-                       nan, // compute_rates() sets them
-                       nan};
+            rows[i].degrees    = {static_cast<unsigned int>(values[0])};
+            rows[i].refinement = static_cast<unsigned int>(values[1]);
+            rows[i].n_cells    = static_cast<unsigned int>(values[2]);
+            rows[i].n_dofs     = static_cast<unsigned int>(values[3]);
+            rows[i].total.displacement_error = values[4];
+            rows[i].total.stress_error       = values[5];
+            // compute_rates() sets the rates
           }
         if (!parameters.run.test_mode)
           pcout << "  " << cases.size() << " cases on " << n_ranks
@@ -353,8 +635,30 @@ namespace mbfem
   void
   OrderStudy<dim>::run()
   {
+    // The blocks of the model, as the simulation would build them.
+    {
+      MeshParameters mesh     = parameters.mesh;
+      mesh.initial_refinement = 0;
+      Triangulation<dim> triangulation;
+      create_mesh(mesh, triangulation);
+      const auto &excavated = parameters.excavation.excavated_ids;
+      block_ids.clear();
+      for (const auto id : mbfem::block_ids(triangulation))
+        if (std::find(excavated.begin(), excavated.end(), id) ==
+            excavated.end())
+          block_ids.push_back(id);
+    }
+    degree_cases(); // refuses too many combinations before any output
+
     pcout << "mbfem: element-order study, " << dim << "D"
-          << (dim == 2 ? " plane strain" : "") << ", degrees";
+          << (dim == 2 ? " plane strain" : "");
+    if (block_ids.size() > 1)
+      pcout << ", " << block_ids.size() << " blocks ("
+            << (parameters.order_study.block_degrees == "same" ?
+                  "the same degree in each" :
+                  "all combinations of degrees")
+            << ")";
+    pcout << ", degrees";
     for (const auto p : parameters.order_study.degrees)
       pcout << " " << p;
     pcout << ", refinement levels";

@@ -4,6 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/base/types.h>
 
 #include <string>
 #include <vector>
@@ -29,6 +30,12 @@ namespace mbfem
     std::string               table_file;
 
     /**
+     * Models of several blocks: 'same' (each degree in every block) or
+     * 'all combinations' (every assignment of the degrees to the blocks).
+     */
+    std::string block_degrees = "same";
+
+    /**
      * Relative errors below this are round-off: the solution lies in the
      * finite element space (or the solver's precision is reached) and no
      * rate is shown.
@@ -36,17 +43,27 @@ namespace mbfem
     double round_off_floor = 1e-12;
   };
 
-  /** One row of the order study: a degree on a mesh level. */
+  /** Relative L2 errors of one block or of the whole model, and rates. */
+  struct OrderStudyErrors
+  {
+    double displacement_error = 0.;
+    double stress_error       = 0.;
+    double displacement_rate  = 0.; // NaN where there is no rate
+    double stress_rate        = 0.;
+  };
+
+  /**
+   * One row of the order study: the degrees of the blocks on a mesh level.
+   * A one-block study has one degree and no rows per block.
+   */
   struct OrderStudyRow
   {
-    unsigned int degree;
-    unsigned int refinement;
-    unsigned int n_cells;
-    unsigned int n_dofs;
-    double       displacement_error;
-    double       stress_error;
-    double       displacement_rate; // NaN where there is no rate
-    double       stress_rate;
+    std::vector<unsigned int> degrees; // per block, in the order of block ids
+    unsigned int              refinement = 0;
+    unsigned int              n_cells    = 0;
+    unsigned int              n_dofs     = 0;
+    OrderStudyErrors          total;
+    std::vector<OrderStudyErrors> blocks; // several blocks only
   };
 
   /**
@@ -54,6 +71,11 @@ namespace mbfem
    * element orders p and mesh levels, with L2 errors of displacement and
    * stress against the closed form and the observed rates (expected p+1
    * and p for smooth solutions). The table goes to the screen and to CSV.
+   *
+   * A model of several blocks is run whole (contact, load history) for
+   * each combination of block degrees and each level, and the table has
+   * the errors of every block beside those of the model: how the order of
+   * one block shows in its own stress and in its neighbours'.
    */
   template <int dim>
   class OrderStudy
@@ -73,8 +95,25 @@ namespace mbfem
                   const double                round_off_floor);
 
   private:
+    /** The degrees of the blocks in each row, in the table's order. */
+    std::vector<std::vector<unsigned int>>
+    degree_cases() const;
+
     OrderStudyRow
-    solve_one(const unsigned int degree, const unsigned int refinement) const;
+    solve_one(const std::vector<unsigned int> &degrees,
+              const unsigned int               refinement) const;
+
+    /** A one-block model: the block alone, its load at the final time. */
+    OrderStudyRow
+    solve_block(const unsigned int degree, const unsigned int refinement) const;
+
+    /**
+     * A model of several blocks: the whole simulation with these block
+     * degrees, its output under a base name that names the case.
+     */
+    OrderStudyRow
+    solve_model(const std::vector<unsigned int> &degrees,
+                const unsigned int               refinement) const;
 
     /**
      * solve_one() for every degree and level, in the table's order; under
@@ -88,10 +127,16 @@ namespace mbfem
     print_table(const std::vector<OrderStudyRow> &rows) const;
 
     void
+    print_block_table(const std::vector<OrderStudyRow> &rows) const;
+
+    void
     write_csv(const std::vector<OrderStudyRow> &rows) const;
 
     const Parameters<dim> &parameters;
     ConditionalOStream    &pcout;
+
+    /** The model's blocks (material ids not excavated), set by run(). */
+    std::vector<types::material_id> block_ids;
   };
 } // namespace mbfem
 
