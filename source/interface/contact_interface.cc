@@ -721,11 +721,15 @@ namespace mbfem
 
 
 
-    /** One line per interface; with many found ones, a count per set. */
+    /**
+     * One line per interface; with many found ones, a count per set.
+     * @p unpaired: per interface, the mortar side's nodes without a pair.
+     */
     template <int dim>
     void
     print_interfaces(const ContactParameters             &parameters,
                      const std::vector<ContactPair<dim>> &pairs,
+                     const std::vector<unsigned int>     &unpaired,
                      ConditionalOStream                  &pcout)
     {
       const unsigned int        n = parameters.interfaces.size();
@@ -758,6 +762,13 @@ namespace mbfem
                 << ", mu = " << declaration.joint.friction_coefficient
                 << ", c = " << declaration.joint.cohesion
                 << ", sigma_t = " << declaration.joint.tensile_strength << "\n";
+          if (unpaired[k] > 0)
+            pcout << "    " << unpaired[k]
+                  << " node(s) of its mortar side face too little of the "
+                     "other side within 'Contact/Search distance' = "
+                  << parameters.search_distance
+                  << " to get a pair: contact there goes unseen (raise the "
+                     "search distance if they may touch)\n";
         }
       for (const auto &[name, count] : per_set)
         pcout << "  " << count[0] << " interfaces between blocks ("
@@ -837,22 +848,24 @@ namespace mbfem
     const double coincident = 1e-8 * size;
 
     std::vector<ContactPair<dim>> pairs;
+    std::vector<unsigned int>     unpaired(parameters.interfaces.size(), 0);
     for (unsigned int k = 0; k < parameters.interfaces.size(); ++k)
       {
         const unsigned int first = pairs.size();
         if (parameters.interfaces[k].mortar)
-          mortar_pairs(blocks,
-                       parameters.interfaces[k],
-                       k,
-                       std::max(coincident, parameters.search_distance),
-                       coincident,
-                       parameters.mortar_on_finer_side,
-                       pairs);
+          unpaired[k] =
+            mortar_pairs(blocks,
+                         parameters.interfaces[k],
+                         k,
+                         std::max(coincident, parameters.search_distance),
+                         coincident,
+                         parameters.mortar_on_finer_side,
+                         pairs);
         else
           pair_interface(blocks, parameters, k, coincident, pairs);
         assign_joint_set(parameters, k, pairs, first);
       }
-    print_interfaces(parameters, pairs, pcout);
+    print_interfaces(parameters, pairs, unpaired, pcout);
 
     // The loops of cross-points are loops of nodes paired one to one; a
     // mortar pair ties one node to several and stays out of them.

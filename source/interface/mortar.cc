@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -393,28 +394,34 @@ namespace mbfem
 
     /**
      * 2D: xi on @p curve of the point whose normal passes through @p x
-     * (Gauss-Newton on (x - x(xi)).t(xi) = 0), and the distance along it.
+     * (Gauss-Newton on (x - x(xi)).t(xi) = 0), and the distance along it;
+     * xi is NaN where the iteration does not settle, so that the callers'
+     * range checks drop the point.
      */
     std::pair<double, double>
     project_along_normal(const FaceCurve &curve, const Point<2> &x)
     {
-      double xi = 0.5;
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      double       xi  = 0.5;
       for (unsigned int it = 0; it < 50; ++it)
         {
           const Tensor<1, 2> t    = curve.tangent(xi);
           const double       step = ((x - curve.point(xi)) * t) / (t * t);
+          if (!std::isfinite(step) || std::abs(xi) > 1e3)
+            return {nan, nan};
           xi += step;
           if (std::abs(step) < 1e-14)
-            break;
+            return {xi, (x - curve.point(xi)) * curve.normal(xi)};
         }
-      return {xi, (x - curve.point(xi)) * curve.normal(xi)};
+      return {nan, nan};
     }
 
 
 
     /**
      * 2D: eta on @p curve where the line x + s n meets it (Newton on the
-     * cross product), and s.
+     * cross product), and s; eta is NaN where the line runs along the
+     * curve or the iteration does not settle.
      */
     std::pair<double, double>
     intersect_line(const FaceCurve    &curve,
@@ -422,20 +429,21 @@ namespace mbfem
                    const Tensor<1, 2> &n,
                    double              eta)
     {
-      const auto cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
+      const double nan   = std::numeric_limits<double>::quiet_NaN();
+      const auto   cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
         return a[0] * b[1] - a[1] * b[0];
       };
       for (unsigned int it = 0; it < 50; ++it)
         {
           const double slope = cross(curve.tangent(eta), n);
-          if (std::abs(slope) < 1e-300)
-            break;
-          const double step = cross(curve.point(eta) - x, n) / slope;
+          const double step  = cross(curve.point(eta) - x, n) / slope;
+          if (!std::isfinite(step) || std::abs(eta) > 1e3)
+            return {nan, nan};
           eta -= step;
           if (std::abs(step) < 1e-14)
-            break;
+            return {eta, (curve.point(eta) - x) * n};
         }
-      return {eta, (curve.point(eta) - x) * n};
+      return {nan, nan};
     }
 
 
@@ -459,7 +467,7 @@ namespace mbfem
     {
       auto [foot, distance]  = intersect_line(curve, x, n, eta);
       Tensor<1, 2> direction = n;
-      for (unsigned int it = 0; it < 20; ++it)
+      for (unsigned int it = 0; it < 20 && std::isfinite(foot); ++it)
         {
           Tensor<1, 2> common = n - curve.normal(foot);
           if (common.norm() < 1e-8)
@@ -624,10 +632,16 @@ namespace mbfem
     {
       const Block<2> &side = *blocks[s.block];
       const FaceCurve s_curve{side.get_mapping(), s.cell, s.face, s.normal};
+      // Only faces that face this one (as in 3D): not the back of a thin
+      // block, nor a face at right angles within the search distance.
+      std::vector<unsigned int> facing;
+      for (const unsigned int c : candidates)
+        if (other_faces[c].normal * s.normal < -1e-3)
+          facing.push_back(c);
       // The segments end where the normals through the other faces' ends
       // cross this face: between them the integrand is one polynomial.
       std::vector<double> breaks{0., 1.};
-      for (const unsigned int c : candidates)
+      for (const unsigned int c : facing)
         for (const auto &vertex : other_faces[c].vertices)
           {
             const auto [xi, d] = project_along_normal(s_curve, vertex);
@@ -638,7 +652,7 @@ namespace mbfem
       std::vector<std::pair<unsigned int, std::vector<OverlapPoint<2>>>>
         overlaps;
       overlap_points_2d(
-        blocks, s, s_curve, other_faces, candidates, breaks, reach, overlaps);
+        blocks, s, s_curve, other_faces, facing, breaks, reach, overlaps);
       return overlaps;
     }
 
@@ -890,7 +904,7 @@ namespace mbfem
 
 
   template <int dim>
-  void
+  unsigned int
   mortar_pairs(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
                const InterfaceDeclaration                     &declaration,
                const unsigned int                              k,
@@ -971,18 +985,22 @@ namespace mbfem
           }
       }
 
+    unsigned int n_unpaired = 0;
     for (const auto &multiplier : multipliers)
       {
         ContactPair<dim> pair;
         if (make_pair_of_multiplier(
               multiplier, k, coincident, declaration.description, pair))
           pairs.push_back(pair);
+        else
+          ++n_unpaired;
       }
+    return n_unpaired;
   }
 
 
 
-  template void
+  template unsigned int
   mortar_pairs(const std::vector<std::unique_ptr<Block<2>>> &,
                const InterfaceDeclaration &,
                const unsigned int,
@@ -990,7 +1008,7 @@ namespace mbfem
                const double,
                const bool,
                std::vector<ContactPair<2>> &);
-  template void
+  template unsigned int
   mortar_pairs(const std::vector<std::unique_ptr<Block<3>>> &,
                const InterfaceDeclaration &,
                const unsigned int,

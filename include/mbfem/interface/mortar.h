@@ -31,9 +31,13 @@ namespace mbfem
    * area is D_j, its normal the side's normal at the node, its initial gap
    * the psi_j-weighted mean distance along that normal; only points within
    * @p reach of the other side count.
+   *
+   * Returns the number of the side's nodes that got no pair: their dual
+   * functions face nothing within @p reach (or too little of it), which
+   * the interface's summary line says.
    */
   template <int dim>
-  void
+  unsigned int
   mortar_pairs(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
                const InterfaceDeclaration                     &declaration,
                const unsigned int                              k,
