@@ -66,7 +66,8 @@ def main(table, image, title):
               lambda c: lowest(c) + 1, "u",
               "%s: u of the model\n(dotted: h^(lowest p + 1))" % title)
         for i, b in enumerate(blocks):
-            own = lambda c, i=i: int(c.split("/")[i])
+            # "2": 'Block degrees = same', the one degree of every block
+            own = lambda c, i=i: int(c.split("/")[i] if "/" in c else c)
             panel(axes[1 + i], rows, key, cases, "stress_error_" + b, own,
                   "sigma", "%s: sigma in block %s\n(dotted: h^p of block %s)"
                   % (title, b, b))

@@ -14,7 +14,10 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <functional>
+#include <iomanip>
 #include <limits>
+#include <set>
 #include <sstream>
 
 namespace mbfem
@@ -155,8 +158,8 @@ namespace mbfem
   OrderStudy<dim>::solve_one(const std::vector<unsigned int> &degrees,
                              const unsigned int               refinement) const
   {
-    return block_ids.size() > 1 ? solve_model(degrees, refinement) :
-                                  solve_block(degrees[0], refinement);
+    return whole_model ? solve_model(degrees, refinement) :
+                         solve_block(degrees[0], refinement);
   }
 
 
@@ -228,11 +231,18 @@ namespace mbfem
 
   namespace
   {
-    /** "1/3/2": the degrees of a row's blocks. */
+    /**
+     * "1/3/2": the degrees of a row's blocks, or "2" where @p same (a short
+     * name however many blocks the model has; 'all combinations' is
+     * refused beyond 64 rows, i.e. 6 blocks).
+     */
     std::string
     degrees_text(const std::vector<unsigned int> &degrees,
-                 const char                      *separator)
+                 const char                      *separator,
+                 const bool                       same)
     {
+      if (same)
+        return std::to_string(degrees[0]);
       std::string text;
       for (unsigned int b = 0; b < degrees.size(); ++b)
         text += (b > 0 ? separator : "") + std::to_string(degrees[b]);
@@ -269,22 +279,33 @@ namespace mbfem
 
 
   template <int dim>
-  OrderStudyRow
-  OrderStudy<dim>::solve_model(const std::vector<unsigned int> &degrees,
-                               const unsigned int refinement) const
+  Parameters<dim>
+  OrderStudy<dim>::case_parameters(const std::vector<unsigned int> &degrees,
+                                   const unsigned int refinement) const
   {
-    Parameters<dim> model = parameters;
-    model.run.mode        = "simulation";
-    model.run.test_mode   = true; // no timings: the run is silent anyway
-    model.mesh.initial_refinement               = refinement;
+    Parameters<dim> model         = parameters;
+    model.run.mode                = "simulation";
+    model.run.test_mode           = true; // no timings: the run is silent
+    model.mesh.initial_refinement = refinement;
     model.discretisation.mapping_follows_degree = true;
+    model.discretisation.degree = degrees[0]; // blocks a stage removes
     model.discretisation.block_degrees.clear();
     for (unsigned int b = 0; b < block_ids.size(); ++b)
       model.discretisation.block_degrees[block_ids[b]] = degrees[b];
     model.output.base_name = parameters.output.base_name + "-p" +
-                             degrees_text(degrees, "_") + "-level" +
-                             std::to_string(refinement);
+                             degrees_text(degrees, "_", same_degrees) +
+                             "-level" + std::to_string(refinement);
+    return model;
+  }
 
+
+
+  template <int dim>
+  OrderStudyRow
+  OrderStudy<dim>::solve_model(const std::vector<unsigned int> &degrees,
+                               const unsigned int refinement) const
+  {
+    Parameters<dim> model = case_parameters(degrees, refinement);
     // The run prints nothing; a failure ends the study with its message
     // (and exit code) after the line that names the case.
     ConditionalOStream    silent(std::cout, false);
@@ -295,23 +316,46 @@ namespace mbfem
       }
     catch (...)
       {
-        pcout << "  the case p = " << degrees_text(degrees, "/") << ", level "
-              << refinement << " failed (its output is "
-              << model.output.base_name << "-* in " << model.output.directory
-              << "):" << std::endl;
+        pcout << "  the case p = " << degrees_text(degrees, "/", same_degrees)
+              << ", level " << refinement
+              << " failed (whatever it wrote is under "
+              << model.output.directory << "/" << model.output.base_name
+              << "-*):" << std::endl;
         throw;
       }
 
+    OrderStudyRow row = errors_of(problem.get_blocks());
+    row.degrees       = degrees;
+    row.refinement    = refinement;
+    AssertThrow(std::isfinite(row.total.displacement_error) &&
+                  std::isfinite(row.total.stress_error),
+                ExcMessage("Order study, p = " +
+                           degrees_text(degrees, "/", same_degrees) +
+                           ", refinement level " + std::to_string(refinement) +
+                           ": the L2 error against 'Exact solution' is not "
+                           "finite; check its functions."));
+    return row;
+  }
+
+
+
+  template <int dim>
+  OrderStudyRow
+  OrderStudy<dim>::errors_of(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks) const
+  {
     const double time =
       parameters.load_history.time(parameters.load_history.n_increments);
     parameters.exact_solution.displacement->set_time(time);
     parameters.exact_solution.stress->set_time(time);
-    OrderStudyRow row;
-    row.degrees    = degrees;
-    row.refinement = refinement;
+    OrderStudyRow           row;
     std::vector<ErrorNorms> errors;
-    for (const auto &block : problem.get_blocks())
+    for (const auto &block : blocks)
       {
+        // Blocks that a stage removed are not part of the final body.
+        if (std::find(block_ids.begin(), block_ids.end(), block->get_id()) ==
+            block_ids.end())
+          continue;
         errors.push_back(compute_errors(*block,
                                         *parameters.exact_solution.displacement,
                                         *parameters.exact_solution.stress));
@@ -323,12 +367,6 @@ namespace mbfem
         row.blocks.push_back(e);
       }
     row.total = combine(errors);
-    AssertThrow(std::isfinite(row.total.displacement_error) &&
-                  std::isfinite(row.total.stress_error),
-                ExcMessage("Order study, p = " + degrees_text(degrees, "/") +
-                           ", refinement level " + std::to_string(refinement) +
-                           ": the L2 error against 'Exact solution' is not "
-                           "finite; check its functions."));
     return row;
   }
 
@@ -389,7 +427,7 @@ namespace mbfem
   void
   OrderStudy<dim>::print_table(const std::vector<OrderStudyRow> &rows) const
   {
-    if (block_ids.size() > 1)
+    if (whole_model)
       return print_block_table(rows);
     pcout << "\n"
           << "   p  level    cells     DoFs   L2 error u  rate   "
@@ -444,11 +482,12 @@ namespace mbfem
     pcout << header << "\n";
     for (const auto &row : rows)
       {
+        pcout << "  " << std::left << std::setw(8)
+              << degrees_text(row.degrees, "/", same_degrees) << std::right;
         char line[256];
         std::snprintf(line,
                       sizeof(line),
-                      "  %-8s %5u %8u  %9.3e %5s  %11.3e %5s",
-                      degrees_text(row.degrees, "/").c_str(),
+                      " %5u %8u  %9.3e %5s  %11.3e %5s",
                       row.refinement,
                       row.n_dofs,
                       row.total.displacement_error,
@@ -483,7 +522,7 @@ namespace mbfem
   {
     // A one-block table keeps its columns; a model of several blocks adds
     // each block's degree and errors (columns named by block id).
-    const bool         several = block_ids.size() > 1;
+    const bool         several = whole_model;
     std::ostringstream csv;
     csv << (several ? "degrees" : "degree")
         << ",refinement,cells,dofs,displacement_error,"
@@ -502,11 +541,11 @@ namespace mbfem
     csv << "\n";
     for (const auto &row : rows)
       {
+        csv << degrees_text(row.degrees, "/", same_degrees);
         char line[256];
         std::snprintf(line,
                       sizeof(line),
-                      "%s,%u,%u,%u,%.6e,%s,%.6e,%s",
-                      degrees_text(row.degrees, "/").c_str(),
+                      ",%u,%u,%u,%.6e,%s,%.6e,%s",
                       row.refinement,
                       row.n_cells,
                       row.n_dofs,
@@ -589,9 +628,9 @@ namespace mbfem
               break;
             }
           if (!parameters.run.test_mode && n_ranks == 1)
-            pcout << "  p = " << degrees_text(degrees, "/") << ", level " << r
-                  << ": " << rows[i].n_dofs << " DoFs, " << timer.wall_time()
-                  << " s so far" << std::endl;
+            pcout << "  p = " << degrees_text(degrees, "/", same_degrees)
+                  << ", level " << r << ": " << rows[i].n_dofs << " DoFs, "
+                  << timer.wall_time() << " s so far" << std::endl;
         }
     if (n_ranks > 1)
       first_failure = Utilities::MPI::min(first_failure, MPI_COMM_WORLD);
@@ -633,27 +672,69 @@ namespace mbfem
 
   template <int dim>
   void
+  OrderStudy<dim>::find_blocks()
+  {
+    MeshParameters mesh     = parameters.mesh;
+    mesh.initial_refinement = 0;
+    Triangulation<dim> triangulation;
+    create_mesh(mesh, triangulation);
+    const std::vector<types::material_id> ids = mbfem::block_ids(triangulation);
+    // A mesh of several material ids is a model of blocks even where
+    // excavation leaves one: only the simulation removes excavated rock.
+    whole_model = ids.size() > 1;
+
+    std::set<unsigned int> gone(parameters.excavation.excavated_ids.begin(),
+                                parameters.excavation.excavated_ids.end());
+    for (const auto &stage : parameters.load_history.stages)
+      gone.insert(stage.removed_blocks.begin(), stage.removed_blocks.end());
+    block_ids.clear();
+    for (const auto id : ids)
+      if (gone.count(id) == 0)
+        block_ids.push_back(id);
+
+    // Node-to-node pairs join facing nodes one to one: blocks of different
+    // degrees need mortar interfaces.
+    const ContactParameters &contact = parameters.contact;
+    if (whole_model && parameters.order_study.block_degrees != "same" &&
+        parameters.order_study.degrees.size() > 1)
+      {
+        AssertThrow(!contact.all_shared_faces,
+                    ExcMessage(
+                      "Order study/Block degrees = all combinations gives "
+                      "neighbouring blocks different degrees, which the "
+                      "node-to-node pairs of 'Contact/Interfaces = all' "
+                      "cannot join (their nodes must face each other one to "
+                      "one). Declare the interfaces with 'mortar' ('blocks "
+                      "1:2 mortar'), or use 'Block degrees = same'."));
+        for (const auto &interface : contact.interfaces)
+          AssertThrow(interface.mortar,
+                      ExcMessage(
+                        "Order study/Block degrees = all combinations gives "
+                        "neighbouring blocks different degrees, which the "
+                        "node-to-node interface '" +
+                        interface.description +
+                        "' cannot join (its nodes must face each other one "
+                        "to one). Declare it '" +
+                        interface.description +
+                        " mortar', or use 'Block degrees = same'."));
+      }
+  }
+
+
+
+  template <int dim>
+  void
   OrderStudy<dim>::run()
   {
-    // The blocks of the model, as the simulation would build them.
-    {
-      MeshParameters mesh     = parameters.mesh;
-      mesh.initial_refinement = 0;
-      Triangulation<dim> triangulation;
-      create_mesh(mesh, triangulation);
-      const auto &excavated = parameters.excavation.excavated_ids;
-      block_ids.clear();
-      for (const auto id : mbfem::block_ids(triangulation))
-        if (std::find(excavated.begin(), excavated.end(), id) ==
-            excavated.end())
-          block_ids.push_back(id);
-    }
+    find_blocks();
     degree_cases(); // refuses too many combinations before any output
+    same_degrees = parameters.order_study.block_degrees == "same";
 
     pcout << "mbfem: element-order study, " << dim << "D"
           << (dim == 2 ? " plane strain" : "");
-    if (block_ids.size() > 1)
-      pcout << ", " << block_ids.size() << " blocks ("
+    if (whole_model)
+      pcout << ", " << block_ids.size()
+            << (block_ids.size() == 1 ? " block (" : " blocks (")
             << (parameters.order_study.block_degrees == "same" ?
                   "the same degree in each" :
                   "all combinations of degrees")

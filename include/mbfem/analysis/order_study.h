@@ -6,6 +6,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/types.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,9 @@ namespace mbfem
 
   template <int dim>
   struct Parameters;
+
+  template <int dim>
+  class Block;
 
   /** Subsection "Order study". */
   struct OrderStudyParameters
@@ -95,10 +99,18 @@ namespace mbfem
                   const double                round_off_floor);
 
   private:
+    /**
+     * Sets whole_model and block_ids from the mesh, the excavation and the
+     * stages; refuses 'all combinations' over node-to-node interfaces.
+     */
+    void
+    find_blocks();
+
     /** The degrees of the blocks in each row, in the table's order. */
     std::vector<std::vector<unsigned int>>
     degree_cases() const;
 
+    /** solve_model() or solve_block(), by whole_model. */
     OrderStudyRow
     solve_one(const std::vector<unsigned int> &degrees,
               const unsigned int               refinement) const;
@@ -115,10 +127,20 @@ namespace mbfem
     solve_model(const std::vector<unsigned int> &degrees,
                 const unsigned int               refinement) const;
 
+    /** The model's parameters for one case: degrees, level, base name. */
+    Parameters<dim>
+    case_parameters(const std::vector<unsigned int> &degrees,
+                    const unsigned int               refinement) const;
+
+    /** A row's cells, DoFs and errors, of the blocks in block_ids. */
+    OrderStudyRow
+    errors_of(const std::vector<std::unique_ptr<Block<dim>>> &blocks) const;
+
     /**
-     * solve_one() for every degree and level, in the table's order; under
-     * mpirun each rank solves a share of them and the rows are exchanged
-     * (doc/parallel.md).
+     * solve_one() for every degree and level, in the table's order. Under
+     * mpirun each rank solves a share of a one-block study's cases and the
+     * rows are exchanged; a model of several blocks runs every case on
+     * all ranks, its blocks shared out (doc/parallel.md).
      */
     std::vector<OrderStudyRow>
     solve_all(const Timer &timer) const;
@@ -126,16 +148,30 @@ namespace mbfem
     void
     print_table(const std::vector<OrderStudyRow> &rows) const;
 
+    /** The table of a model of several blocks: the model, then each block. */
     void
     print_block_table(const std::vector<OrderStudyRow> &rows) const;
 
+    /** The CSV; a model of several blocks adds columns per block id. */
     void
     write_csv(const std::vector<OrderStudyRow> &rows) const;
 
     const Parameters<dim> &parameters;
     ConditionalOStream    &pcout;
 
-    /** The model's blocks (material ids not excavated), set by run(). */
+    /**
+     * A mesh of several material ids: each case is the whole simulation
+     * (MultiBodyProblem), even where excavation leaves one block.
+     */
+    bool whole_model = false;
+
+    /** 'Block degrees = same': a row is named by its one degree. */
+    bool same_degrees = true;
+
+    /**
+     * The blocks of the final body (neither excavated nor removed by a
+     * stage), whose errors the table shows; set by find_blocks().
+     */
     std::vector<types::material_id> block_ids;
   };
 } // namespace mbfem
