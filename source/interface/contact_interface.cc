@@ -866,6 +866,7 @@ namespace mbfem
         assign_joint_set(parameters, k, pairs, first);
       }
     print_interfaces(parameters, pairs, unpaired, pcout);
+    check_mortar_cross_points(blocks, pairs, parameters.interfaces, coincident);
 
     // The loops of cross-points are loops of nodes paired one to one; a
     // mortar pair ties one node to several and stays out of them.

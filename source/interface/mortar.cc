@@ -1000,6 +1000,101 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /** A point rounded to @p h, as a key. */
+    template <int dim>
+    std::array<long long, dim>
+    point_key(const Point<dim> &x, const double h)
+    {
+      std::array<long long, dim> key;
+      for (unsigned int d = 0; d < dim; ++d)
+        key[d] = std::llround(x[d] / h);
+      return key;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  check_mortar_cross_points(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+    const std::vector<ContactPair<dim>>            &pairs,
+    const std::vector<InterfaceDeclaration>        &interfaces,
+    const double                                    coincident)
+  {
+    if (std::none_of(interfaces.begin(), interfaces.end(), [](const auto &i) {
+          return i.mortar;
+        }))
+      return;
+    std::map<unsigned int, std::vector<Point<dim>>> points_of;
+    const auto points = [&](const unsigned int b) -> const auto &
+    {
+      auto found = points_of.find(b);
+      if (found == points_of.end())
+        found = points_of.emplace(b, blocks[b]->support_points()).first;
+      return found->second;
+    };
+    // Per point: the interfaces with a node there, and the blocks they join.
+    struct AtPoint
+    {
+      Point<dim>                                  x;
+      std::set<unsigned int>                      interfaces;
+      std::set<std::pair<unsigned int, unsigned>> joined;
+    };
+    std::map<std::array<long long, dim>, AtPoint> at;
+    const double h = std::max(coincident, 1e-300);
+    for (const auto &pair : pairs)
+      for (const PairSide<dim> *side : {&pair.a, &pair.b})
+        for (const auto &node : side->nodes)
+          if (std::abs(node.weight) > 1e-10)
+            {
+              const Point<dim> &x     = points(side->block)[node.dofs[0]];
+              AtPoint          &entry = at[point_key(x, h)];
+              entry.x                 = x;
+              entry.interfaces.insert(pair.interface);
+              entry.joined.emplace(std::min(pair.a.block, pair.b.block),
+                                   std::max(pair.a.block, pair.b.block));
+            }
+    for (const auto &[key, entry] : at)
+      {
+        std::set<unsigned int> vertices;
+        for (const auto &[a, b] : entry.joined)
+          vertices.insert({a, b});
+        // A connected graph with as many edges as vertices has a loop.
+        if (entry.joined.size() < vertices.size() || vertices.size() < 3)
+          continue;
+        std::string names, mortar;
+        for (const unsigned int k : entry.interfaces)
+          {
+            names +=
+              (names.empty() ? "'" : ", '") + interfaces[k].description + "'";
+            if (interfaces[k].mortar && mortar.empty())
+              mortar = interfaces[k].description;
+          }
+        if (mortar.empty())
+          continue;
+        std::ostringstream where;
+        where << entry.x;
+        AssertThrow(false,
+                    ExcMessage(
+                      "Contact/Interfaces: at (" + where.str() + ") " +
+                      std::to_string(vertices.size()) +
+                      " blocks meet, joined in a loop by the interfaces " +
+                      names + ", and '" + mortar +
+                      "' is a mortar interface. The cross-point rule that "
+                      "keeps such a loop determinate works on node-to-node "
+                      "pairs only; with mortar pairs in it the interface "
+                      "system is singular. Declare the interfaces that meet "
+                      "there without 'mortar' (their meshes must then match "
+                      "along them), or leave out the interface that closes "
+                      "the loop."));
+      }
+  }
+
+
+
   template unsigned int
   mortar_pairs(const std::vector<std::unique_ptr<Block<2>>> &,
                const InterfaceDeclaration &,
@@ -1016,4 +1111,15 @@ namespace mbfem
                const double,
                const bool,
                std::vector<ContactPair<3>> &);
+
+  template void
+  check_mortar_cross_points(const std::vector<std::unique_ptr<Block<2>>> &,
+                            const std::vector<ContactPair<2>> &,
+                            const std::vector<InterfaceDeclaration> &,
+                            const double);
+  template void
+  check_mortar_cross_points(const std::vector<std::unique_ptr<Block<3>>> &,
+                            const std::vector<ContactPair<3>> &,
+                            const std::vector<InterfaceDeclaration> &,
+                            const double);
 } // namespace mbfem

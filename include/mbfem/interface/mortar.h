@@ -45,6 +45,26 @@ namespace mbfem
                const double                                    coincident,
                const bool                                      on_finer_side,
                std::vector<ContactPair<dim>>                  &pairs);
+
+  /**
+   * Refuses a mortar interface at a point where three or more blocks meet
+   * in a loop of interfaces (a T- or X-junction whose blocks are joined
+   * pairwise there). The cross-point rule (cross_points.h) that keeps such
+   * loops determinate works on node-to-node pairs; with mortar pairs in
+   * the loop the same motion is prescribed twice while they stick, and the
+   * interface system is singular: a 2 x 2 square of bonded blocks with
+   * mortar interfaces ended "converged" with forces of the joints'
+   * strength and displacements 10^5 times too large. @p pairs: those of
+   * every interface; a node counts at a point where its weight is above
+   * 1e-10 and it lies within @p coincident of it.
+   */
+  template <int dim>
+  void
+  check_mortar_cross_points(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+    const std::vector<ContactPair<dim>>            &pairs,
+    const std::vector<InterfaceDeclaration>        &interfaces,
+    const double                                    coincident);
 } // namespace mbfem
 
 #endif
