@@ -17,6 +17,12 @@
 //     the weights still reproduce linear fields to 1e-10; built over the
 //     whole face it reproduced only constants (measured: 2.2e-2 for a
 //     linear field).
+//  2c. The patch test of 1. moved by (1000, 1000)
+//     (meshes/mortar_patch_2d_far.geo): the 2D projections must settle at
+//     the round-off of coordinates far from the origin. With a fixed
+//     tolerance on Newton's step they did not, the points they dropped
+//     made whole faces look covered in part, and the interface carried up
+//     to 2.9 MPa (found by a review).
 //  3. On matching meshes a mortar interface is node-to-node contact: the
 //     paper's stacked cantilevers (p = 2, 10 increments) with 'blocks 0:1
 //     mortar' give the forces of 'blocks 0:1' at every pair to 1e-10 of the
@@ -162,6 +168,37 @@ end
               << (weights < 1e-10 ? "yes" : "NO") << std::endl;
   }
 
+  /** 2c.: the pressure and shear of the patch test far from the origin. */
+  void
+  far_patch_test(const unsigned int lower, const unsigned int upper)
+  {
+    std::string text =
+      read(SOURCE_DIR "/../parameters/mortar_patch_2d.prm") + settings +
+      "subsection Mesh\n  set Mesh file = ../meshes/mortar_patch_2d_far.msh\n"
+      "end\nsubsection Finite element\n  set Polynomial degree = 1\n"
+      "  set Block degrees = 1: " +
+      std::to_string(lower) + "; 2: " + std::to_string(upper) + "\nend\n";
+    mbfem::Parameters<2> parameters;
+    const auto           problem  = run<2>(text, parameters);
+    const auto          &contact  = *problem->get_contact();
+    double               pressure = 0., shear = 0., area = 0.;
+    for (unsigned int k = 0; k < contact.pairs().size(); ++k)
+      {
+        const Tensor<1, 2> r = contact.local_force(k) / contact.pairs()[k].area;
+        pressure             = std::max(pressure, std::abs(r[0] - 1e6) / 1e6);
+        shear                = std::max(shear, std::abs(r[1]) / 1e6);
+        area += contact.pairs()[k].area;
+      }
+    std::cout << "2D, moved by (1000, 1000), p = " << lower << " below and "
+              << upper << " above: " << contact.pairs().size()
+              << " pairs, area 1 to 1e-10: "
+              << (std::abs(area - 1.) < 1e-10 ? "yes" : "NO")
+              << "; pressure 1 MPa at every pair to 1e-8: "
+              << (pressure < 1e-8 ? "yes" : "NO")
+              << "; shear below 1e-8 of it: " << (shear < 1e-8 ? "yes" : "NO")
+              << std::endl;
+  }
+
   void
   matching_is_node_to_node()
   {
@@ -222,6 +259,8 @@ main(int argc, char *argv[])
     patch_test<2>(lower, upper);
   patch_test<2>(1, 2, "finer");
   partial_cover();
+  far_patch_test(1, 1);
+  far_patch_test(1, 2);
   for (const auto &[lower, upper] :
        std::vector<std::pair<unsigned, unsigned>>{{1, 1}, {1, 2}, {2, 2}})
     patch_test<3>(lower, upper);

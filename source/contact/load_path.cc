@@ -127,7 +127,8 @@ namespace mbfem
     double                s        = 0.;
     unsigned int          switches = 0;
     std::set<std::string> seen_here; // states met at this s
-    const unsigned int    max_switches = 20 * pairs.size() + 100;
+    const unsigned int    max_switches             = 20 * pairs.size() + 100;
+    const unsigned int    max_switches_at_one_load = 2 * pairs.size() + 50;
     Segment               segment;
     // Every pair's normal gap at the present s (for close_along()).
     std::vector<double> gap(pairs.size());
@@ -161,7 +162,12 @@ namespace mbfem
           }
         switch_state(trial, segment, event);
         ++switches;
+        // At one load the path may also wander without repeating a state:
+        // the 3D stacked beams of p = 2 with one refined (369 mortar pairs)
+        // made 7480 switches at s below 1e-15 (250 s) before the cap below
+        // ended them, and Newton's method then concluded in 23 steps.
         if (!seen_here.insert(checks.signature(trial)).second ||
+            seen_here.size() > max_switches_at_one_load ||
             switches > max_switches)
           {
             Outcome cycle;

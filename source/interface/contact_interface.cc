@@ -727,10 +727,10 @@ namespace mbfem
      */
     template <int dim>
     void
-    print_interfaces(const ContactParameters             &parameters,
-                     const std::vector<ContactPair<dim>> &pairs,
-                     const std::vector<unsigned int>     &unpaired,
-                     ConditionalOStream                  &pcout)
+    print_interfaces(const ContactParameters                    &parameters,
+                     const std::vector<ContactPair<dim>>        &pairs,
+                     const std::vector<std::vector<Point<dim>>> &unpaired,
+                     ConditionalOStream                         &pcout)
     {
       const unsigned int        n = parameters.interfaces.size();
       std::vector<unsigned int> n_pairs(n, 0), n_gap(n, 0);
@@ -762,13 +762,14 @@ namespace mbfem
                 << ", mu = " << declaration.joint.friction_coefficient
                 << ", c = " << declaration.joint.cohesion
                 << ", sigma_t = " << declaration.joint.tensile_strength << "\n";
-          if (unpaired[k] > 0)
-            pcout << "    " << unpaired[k]
-                  << " node(s) of its mortar side face too little of the "
-                     "other side within 'Contact/Search distance' = "
+          if (!unpaired[k].empty())
+            pcout << "    " << unpaired[k].size()
+                  << " node(s) of its mortar side get no pair, the first at ("
+                  << unpaired[k][0]
+                  << "): they face too little of the other side (beyond its "
+                     "ends, or farther than 'Contact/Search distance' = "
                   << parameters.search_distance
-                  << " to get a pair: contact there goes unseen (raise the "
-                     "search distance if they may touch)\n";
+                  << "), so contact there goes unseen\n";
         }
       for (const auto &[name, count] : per_set)
         pcout << "  " << count[0] << " interfaces between blocks ("
@@ -847,8 +848,8 @@ namespace mbfem
       size = std::max(size, diameter(block->get_triangulation()));
     const double coincident = 1e-8 * size;
 
-    std::vector<ContactPair<dim>> pairs;
-    std::vector<unsigned int>     unpaired(parameters.interfaces.size(), 0);
+    std::vector<ContactPair<dim>>        pairs;
+    std::vector<std::vector<Point<dim>>> unpaired(parameters.interfaces.size());
     for (unsigned int k = 0; k < parameters.interfaces.size(); ++k)
       {
         const unsigned int first = pairs.size();
@@ -866,7 +867,8 @@ namespace mbfem
         assign_joint_set(parameters, k, pairs, first);
       }
     print_interfaces(parameters, pairs, unpaired, pcout);
-    check_mortar_cross_points(blocks, pairs, parameters.interfaces, coincident);
+    check_mortar_cross_points(
+      blocks, pairs, parameters.interfaces, coincident, pcout);
 
     // The loops of cross-points are loops of nodes paired one to one; a
     // mortar pair ties one node to several and stays out of them.

@@ -32,12 +32,12 @@ namespace mbfem
    * the psi_j-weighted mean distance along that normal; only points within
    * @p reach of the other side count.
    *
-   * Returns the number of the side's nodes that got no pair: their dual
+   * Returns where the side's nodes are that got no pair: their dual
    * functions face nothing within @p reach (or too little of it), which
    * the interface's summary line says.
    */
   template <int dim>
-  unsigned int
+  std::vector<Point<dim>>
   mortar_pairs(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
                const InterfaceDeclaration                     &declaration,
                const unsigned int                              k,
@@ -47,16 +47,18 @@ namespace mbfem
                std::vector<ContactPair<dim>>                  &pairs);
 
   /**
-   * Refuses a mortar interface at a point where three or more blocks meet
-   * in a loop of interfaces (a T- or X-junction whose blocks are joined
-   * pairwise there). The cross-point rule (cross_points.h) that keeps such
-   * loops determinate works on node-to-node pairs; with mortar pairs in
-   * the loop the same motion is prescribed twice while they stick, and the
-   * interface system is singular: a 2 x 2 square of bonded blocks with
-   * mortar interfaces ended "converged" with forces of the joints'
-   * strength and displacements 10^5 times too large. @p pairs: those of
-   * every interface; a node counts at a point where its weight is above
-   * 1e-10 and it lies within @p coincident of it.
+   * Mortar interfaces on a loop of interfaces at a point where three or
+   * more blocks meet (a T- or X-junction whose blocks are joined pairwise
+   * there). The cross-point rule (cross_points.h) that keeps such loops
+   * determinate works on node-to-node pairs. Where the meshes match at the
+   * point, the mortar pairs are node-to-node pairs outside the rule, the
+   * same motion is prescribed twice while they stick and the interface
+   * system is singular (a 2 x 2 square of bonded blocks ended "converged"
+   * with forces of the joints' strength): refused. Non-matching there, the
+   * rows are not exactly dependent (measured models solved, one with the
+   * formulations disagreeing): said on @p pcout. A node counts at a point
+   * where its weight is above 1e-10; points are compared on a grid of
+   * @p coincident.
    */
   template <int dim>
   void
@@ -64,7 +66,8 @@ namespace mbfem
     const std::vector<std::unique_ptr<Block<dim>>> &blocks,
     const std::vector<ContactPair<dim>>            &pairs,
     const std::vector<InterfaceDeclaration>        &interfaces,
-    const double                                    coincident);
+    const double                                    coincident,
+    ConditionalOStream                             &pcout);
 } // namespace mbfem
 
 #endif
