@@ -83,7 +83,34 @@ namespace mbfem
       u_norm2 > 0. ? std::sqrt(u_error2 / u_norm2) : errors.displacement;
     errors.stress_relative =
       s_norm2 > 0. ? std::sqrt(s_error2 / s_norm2) : errors.stress;
+    errors.displacement_norm = std::sqrt(u_norm2);
+    errors.stress_norm       = std::sqrt(s_norm2);
     return errors;
+  }
+
+
+
+  ErrorNorms
+  combine_errors(const std::vector<ErrorNorms> &blocks)
+  {
+    double u_error2 = 0., u_norm2 = 0., s_error2 = 0., s_norm2 = 0.;
+    for (const ErrorNorms &e : blocks)
+      {
+        u_error2 += e.displacement * e.displacement;
+        s_error2 += e.stress * e.stress;
+        u_norm2 += e.displacement_norm * e.displacement_norm;
+        s_norm2 += e.stress_norm * e.stress_norm;
+      }
+    ErrorNorms total;
+    total.displacement      = std::sqrt(u_error2);
+    total.stress            = std::sqrt(s_error2);
+    total.displacement_norm = std::sqrt(u_norm2);
+    total.stress_norm       = std::sqrt(s_norm2);
+    total.displacement_relative =
+      u_norm2 > 0. ? std::sqrt(u_error2 / u_norm2) : total.displacement;
+    total.stress_relative =
+      s_norm2 > 0. ? std::sqrt(s_error2 / s_norm2) : total.stress;
+    return total;
   }
 
 

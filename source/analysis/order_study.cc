@@ -251,29 +251,6 @@ namespace mbfem
 
 
 
-    /**
-     * Relative errors of the whole model from those of its blocks: the
-     * blocks' squared absolute errors and squared exact norms summed.
-     */
-    OrderStudyErrors
-    combine(const std::vector<ErrorNorms> &blocks)
-    {
-      double u_error2 = 0., u_norm2 = 0., s_error2 = 0., s_norm2 = 0.;
-      for (const ErrorNorms &e : blocks)
-        {
-          u_error2 += e.displacement * e.displacement;
-          s_error2 += e.stress * e.stress;
-          if (e.displacement_relative > 0.)
-            u_norm2 += std::pow(e.displacement / e.displacement_relative, 2);
-          if (e.stress_relative > 0.)
-            s_norm2 += std::pow(e.stress / e.stress_relative, 2);
-        }
-      OrderStudyErrors total;
-      total.displacement_error =
-        std::sqrt(u_error2 / std::max(u_norm2, 1e-300));
-      total.stress_error = std::sqrt(s_error2 / std::max(s_norm2, 1e-300));
-      return total;
-    }
   } // namespace
 
 
@@ -366,7 +343,9 @@ namespace mbfem
         e.stress_error       = errors.back().stress_relative;
         row.blocks.push_back(e);
       }
-    row.total = combine(errors);
+    const ErrorNorms total       = combine_errors(errors);
+    row.total.displacement_error = total.displacement_relative;
+    row.total.stress_error       = total.stress_relative;
     return row;
   }
 
@@ -418,6 +397,29 @@ namespace mbfem
       char buffer[64];
       std::snprintf(buffer, sizeof(buffer), format, value);
       return buffer;
+    }
+
+
+
+    /**
+     * The displacement error, its rate, the stress error and its rate of
+     * @p e, laid out by @p layout (four fields: %e, %s, %e, %s), the
+     * rates by @p rate_format ('-' where there is none).
+     */
+    std::string
+    errors_text(const char             *layout,
+                const char             *rate_format,
+                const OrderStudyErrors &e)
+    {
+      char text[128];
+      std::snprintf(text,
+                    sizeof(text),
+                    layout,
+                    e.displacement_error,
+                    format(rate_format, e.displacement_rate).c_str(),
+                    e.stress_error,
+                    format(rate_format, e.stress_rate).c_str());
+      return text;
     }
   } // namespace
 
@@ -483,29 +485,12 @@ namespace mbfem
     for (const auto &row : rows)
       {
         pcout << "  " << std::left << std::setw(8)
-              << degrees_text(row.degrees, "/", same_degrees) << std::right;
-        char line[256];
-        std::snprintf(line,
-                      sizeof(line),
-                      " %5u %8u  %9.3e %5s  %11.3e %5s",
-                      row.refinement,
-                      row.n_dofs,
-                      row.total.displacement_error,
-                      format("%.2f", row.total.displacement_rate).c_str(),
-                      row.total.stress_error,
-                      format("%.2f", row.total.stress_rate).c_str());
-        pcout << line;
+              << degrees_text(row.degrees, "/", same_degrees) << std::right
+              << " " << std::setw(5) << row.refinement << " " << std::setw(8)
+              << row.n_dofs
+              << errors_text("  %9.3e %5s  %11.3e %5s", "%.2f", row.total);
         for (const auto &block : row.blocks)
-          {
-            std::snprintf(line,
-                          sizeof(line),
-                          "  %8.2e %5s  %10.2e %5s",
-                          block.displacement_error,
-                          format("%.2f", block.displacement_rate).c_str(),
-                          block.stress_error,
-                          format("%.2f", block.stress_rate).c_str());
-            pcout << line;
-          }
+          pcout << errors_text("  %8.2e %5s  %10.2e %5s", "%.2f", block);
         pcout << "\n";
       }
     pcout << "  (rate = log2 of the error ratio between levels; '-' where an "
@@ -541,34 +526,15 @@ namespace mbfem
     csv << "\n";
     for (const auto &row : rows)
       {
-        csv << degrees_text(row.degrees, "/", same_degrees);
-        char line[256];
-        std::snprintf(line,
-                      sizeof(line),
-                      ",%u,%u,%u,%.6e,%s,%.6e,%s",
-                      row.refinement,
-                      row.n_cells,
-                      row.n_dofs,
-                      row.total.displacement_error,
-                      format("%.4f", row.total.displacement_rate).c_str(),
-                      row.total.stress_error,
-                      format("%.4f", row.total.stress_rate).c_str());
-        csv << line;
+        csv << degrees_text(row.degrees, "/", same_degrees) << ","
+            << row.refinement << "," << row.n_cells << "," << row.n_dofs
+            << errors_text(",%.6e,%s,%.6e,%s", "%.4f", row.total);
         if (several)
           {
             for (const unsigned int p : row.degrees)
               csv << "," << p;
             for (const auto &block : row.blocks)
-              {
-                std::snprintf(line,
-                              sizeof(line),
-                              ",%.6e,%s,%.6e,%s",
-                              block.displacement_error,
-                              format("%.4f", block.displacement_rate).c_str(),
-                              block.stress_error,
-                              format("%.4f", block.stress_rate).c_str());
-                csv << line;
-              }
+              csv << errors_text(",%.6e,%s,%.6e,%s", "%.4f", block);
           }
         csv << "\n";
       }

@@ -5,18 +5,34 @@
 
 #include <deal.II/base/function.h>
 
+#include <vector>
+
 namespace mbfem
 {
   using namespace dealii;
 
-  /** L2 errors against a closed-form solution, absolute and relative. */
+  /**
+   * L2 errors against a closed-form solution, absolute and relative, and
+   * the L2 norms of the exact fields (zero where an exact field is zero:
+   * the relative error is then the absolute one).
+   */
   struct ErrorNorms
   {
     double displacement          = 0.;
     double displacement_relative = 0.;
     double stress                = 0.;
     double stress_relative       = 0.;
+    double displacement_norm     = 0.;
+    double stress_norm           = 0.;
   };
+
+  /**
+   * The errors of several blocks as one body: absolute errors and exact
+   * norms summed in squares, relative to the summed norm (absolute where
+   * the exact field is zero throughout).
+   */
+  ErrorNorms
+  combine_errors(const std::vector<ErrorNorms> &blocks);
 
   /**
    * L2 norms of u - u_exact and sigma - sigma_exact over @p block (the
