@@ -30,6 +30,33 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /**
+     * ErrorNorms from the squared L2 errors and exact norms: relative to
+     * the norm, or absolute where the exact field is zero.
+     */
+    ErrorNorms
+    error_norms(const double u_error2,
+                const double u_norm2,
+                const double s_error2,
+                const double s_norm2)
+    {
+      ErrorNorms errors;
+      errors.displacement      = std::sqrt(u_error2);
+      errors.stress            = std::sqrt(s_error2);
+      errors.displacement_norm = std::sqrt(u_norm2);
+      errors.stress_norm       = std::sqrt(s_norm2);
+      errors.displacement_relative =
+        u_norm2 > 0. ? std::sqrt(u_error2 / u_norm2) : errors.displacement;
+      errors.stress_relative =
+        s_norm2 > 0. ? std::sqrt(s_error2 / s_norm2) : errors.stress;
+      return errors;
+    }
+  } // namespace
+
+
+
   template <int dim>
   ErrorNorms
   compute_errors(const Block<dim>    &block,
@@ -76,16 +103,7 @@ namespace mbfem
           }
       }
 
-    ErrorNorms errors;
-    errors.displacement = std::sqrt(u_error2);
-    errors.stress       = std::sqrt(s_error2);
-    errors.displacement_relative =
-      u_norm2 > 0. ? std::sqrt(u_error2 / u_norm2) : errors.displacement;
-    errors.stress_relative =
-      s_norm2 > 0. ? std::sqrt(s_error2 / s_norm2) : errors.stress;
-    errors.displacement_norm = std::sqrt(u_norm2);
-    errors.stress_norm       = std::sqrt(s_norm2);
-    return errors;
+    return error_norms(u_error2, u_norm2, s_error2, s_norm2);
   }
 
 
@@ -101,16 +119,7 @@ namespace mbfem
         u_norm2 += e.displacement_norm * e.displacement_norm;
         s_norm2 += e.stress_norm * e.stress_norm;
       }
-    ErrorNorms total;
-    total.displacement      = std::sqrt(u_error2);
-    total.stress            = std::sqrt(s_error2);
-    total.displacement_norm = std::sqrt(u_norm2);
-    total.stress_norm       = std::sqrt(s_norm2);
-    total.displacement_relative =
-      u_norm2 > 0. ? std::sqrt(u_error2 / u_norm2) : total.displacement;
-    total.stress_relative =
-      s_norm2 > 0. ? std::sqrt(s_error2 / s_norm2) : total.stress;
-    return total;
+    return error_norms(u_error2, u_norm2, s_error2, s_norm2);
   }
 
 
