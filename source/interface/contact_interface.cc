@@ -3,6 +3,7 @@
 #include <mbfem/interface/contact_interface.h>
 #include <mbfem/interface/cross_points.h>
 #include <mbfem/interface/mortar.h>
+#include <mbfem/interface/mortar_cross_points.h>
 #include <mbfem/mesh/mesh.h>
 
 #include <deal.II/base/quadrature_lib.h>

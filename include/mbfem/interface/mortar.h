@@ -45,29 +45,6 @@ namespace mbfem
                const double                                    coincident,
                const bool                                      on_finer_side,
                std::vector<ContactPair<dim>>                  &pairs);
-
-  /**
-   * Mortar interfaces on a loop of interfaces at a point where three or
-   * more blocks meet (a T- or X-junction whose blocks are joined pairwise
-   * there). The cross-point rule (cross_points.h) that keeps such loops
-   * determinate works on node-to-node pairs. Where the meshes match at the
-   * point, the mortar pairs are node-to-node pairs outside the rule, the
-   * same motion is prescribed twice while they stick and the interface
-   * system is singular (a 2 x 2 square of bonded blocks ended "converged"
-   * with forces of the joints' strength): refused. Non-matching there, the
-   * rows are not exactly dependent (measured models solved, one with the
-   * formulations disagreeing): said on @p pcout. A node counts at a point
-   * where its weight is above 1e-10; points are compared on a grid of
-   * @p coincident.
-   */
-  template <int dim>
-  void
-  check_mortar_cross_points(
-    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
-    const std::vector<ContactPair<dim>>            &pairs,
-    const std::vector<InterfaceDeclaration>        &interfaces,
-    const double                                    coincident,
-    ConditionalOStream                             &pcout);
 } // namespace mbfem
 
 #endif
