@@ -4,6 +4,7 @@
 #include <mbfem/block/block.h>
 #include <mbfem/block/flexibility.h>
 #include <mbfem/block/floating_modes.h>
+#include <mbfem/linear_algebra/mumps_solver.h>
 #include <mbfem/mesh/mesh.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -483,7 +484,10 @@ namespace mbfem
       return; // another rank's block
     try
       {
-        direct_solver.factorize(stiffness);
+        if (mumps_solver)
+          mumps_solver->factorize(stiffness, !plastic.uses_newton());
+        else
+          direct_solver.factorize(stiffness);
       }
     catch (const Exceptions::ExcSingularMatrix &e)
       {
@@ -789,7 +793,8 @@ namespace mbfem
   {
     if (!local)
       return; // share_solution() brings it
-    direct_solver.solve(solution, load);
+    AssertDimension(solution.size(), load.size());
+    solve_stiffness(solution.data(), load.data(), 1);
     constraints.distribute(solution);
     AssertThrow(alpha.empty() || alpha.size() == floating.modes().size(),
                 ExcInternalError());
@@ -855,7 +860,7 @@ namespace mbfem
               column);
             std::copy(column.begin(), column.end(), rhs.begin() + k * n);
           }
-        direct_solver.solve(x.data(), rhs.data(), count);
+        solve_stiffness(x.data(), rhs.data(), count);
         for (unsigned int k = 0; k < count; ++k)
           {
             Vector<double> column(x.begin() + k * n, x.begin() + (k + 1) * n);
@@ -879,16 +884,45 @@ namespace mbfem
 
 
   template <int dim>
+  void
+  Block<dim>::set_flexibility_on_demand()
+  {
+    Assert(has_fixed_stiffness(),
+           ExcMessage("A flexibility on demand needs a fixed stiffness."));
+    if (local && !mumps_solver)
+      {
+        direct_solver.clear();
+        mumps_solver = std::make_shared<MumpsSolver>();
+      }
+  }
+
+
+
+  template <int dim>
   std::unique_ptr<ContactFlexibility>
   Block<dim>::on_demand_flexibility(
-    const std::vector<types::global_dof_index> &dofs) const
+    const std::vector<types::global_dof_index> &dofs)
   {
-    return std::make_unique<ContactFlexibility>(stiffness,
+    set_flexibility_on_demand();
+    if (local && mumps_solver->size() == 0)
+      factorize();
+    return std::make_unique<ContactFlexibility>(mumps_solver,
                                                 homogeneous_constraints,
-                                                dofs,
-                                                !plastic.uses_newton(),
-                                                communicator,
-                                                owner);
+                                                dofs);
+  }
+
+
+
+  template <int dim>
+  void
+  Block<dim>::solve_stiffness(double            *x,
+                              const double      *b,
+                              const unsigned int n_vectors) const
+  {
+    if (mumps_solver)
+      mumps_solver->solve(x, b, n_vectors);
+    else
+      direct_solver.solve(x, b, n_vectors);
   }
 
 

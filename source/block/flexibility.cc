@@ -79,23 +79,14 @@ namespace mbfem
 
 
   ContactFlexibility::ContactFlexibility(
-    const TrilinosWrappers::SparseMatrix       &stiffness,
+    std::shared_ptr<const MumpsSolver>          factorisation,
     const AffineConstraints<double>            &constraints,
-    const std::vector<types::global_dof_index> &dofs,
-    const bool                                  positive_definite,
-    const MPI_Comm                              comm,
-    const unsigned int                          owner)
-    : local(comm == MPI_COMM_SELF ||
-            Utilities::MPI::this_mpi_process(comm) == owner)
+    const std::vector<types::global_dof_index> &dofs)
+    : solver(std::move(factorisation))
   {
     Masters map(constraints, dofs);
     master_dofs = std::move(map.master_dofs);
     weights     = std::move(map.weights);
-    if (is_local())
-      {
-        solver = std::make_unique<MumpsSolver>();
-        solver->factorize(stiffness, positive_definite);
-      }
   }
 
 
@@ -107,7 +98,7 @@ namespace mbfem
   bool
   ContactFlexibility::is_local() const
   {
-    return local;
+    return solver != nullptr;
   }
 
 

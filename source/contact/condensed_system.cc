@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <set>
 
 namespace mbfem
 {
@@ -93,26 +94,20 @@ namespace mbfem
 
   template <int dim>
   void
-  CondensedSystem<dim>::add_block(const Block<dim> &block, const unsigned int b)
+  CondensedSystem<dim>::add_block(Block<dim> &block, const unsigned int b)
   {
-    // The pair sides on this block: (pair, sign); b gets +r, a gets -r.
-    std::vector<std::pair<unsigned int, double>>    sides;
-    std::vector<types::global_dof_index>            dofs;
-    std::map<types::global_dof_index, unsigned int> index_of;
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      for (const int sign : {-1, 1})
-        {
-          const auto &side = pairs[k].side(sign);
-          if (side.block != b)
-            continue;
-          sides.emplace_back(k, sign);
-          for (const auto &node : side.nodes)
-            for (const auto dof : node.dofs)
-              if (index_of.emplace(dof, dofs.size()).second)
-                dofs.push_back(dof);
-        }
+    const std::vector<types::global_dof_index> dofs = contact_dofs(pairs, b);
     if (dofs.empty())
       return;
+    std::map<types::global_dof_index, unsigned int> index_of;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      index_of.emplace(dofs[i], i);
+    // The pair sides on this block: (pair, sign); b gets +r, a gets -r.
+    std::vector<std::pair<unsigned int, double>> sides;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      for (const int sign : {-1, 1})
+        if (pairs[k].side(sign).block == b)
+          sides.emplace_back(k, sign);
 
     // A side's displacement is sum_i w_i u(node_i), in its pair's
     // frame: the rows of S (see project()).
@@ -138,10 +133,7 @@ namespace mbfem
                                                    frame[i][c]);
           }
       }
-    using Columns = ContactParameters::FlexibilityColumns;
-    if (block.has_fixed_stiffness() &&
-        (flexibility_columns == Columns::on_demand ||
-         (flexibility_columns == Columns::automatic && dofs.size() >= 500)))
+    if (is_on_demand(block, dofs.size(), flexibility_columns))
       {
         flexibility.on_demand = block.on_demand_flexibility(dofs);
         flexibility.diagonal.assign(rows.size(), 0.);
@@ -158,6 +150,40 @@ namespace mbfem
     else
       flexibility.matrix.reinit(rows.size(), rows.size());
     block_flexibility.push_back(std::move(flexibility));
+  }
+
+
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  CondensedSystem<dim>::contact_dofs(const std::vector<ContactPair<dim>> &pairs,
+                                     const unsigned int                   b)
+  {
+    std::vector<types::global_dof_index> dofs;
+    std::set<types::global_dof_index>    seen;
+    for (const auto &pair : pairs)
+      for (const int sign : {-1, 1})
+        if (pair.side(sign).block == b)
+          for (const auto &node : pair.side(sign).nodes)
+            for (const auto dof : node.dofs)
+              if (seen.insert(dof).second)
+                dofs.push_back(dof);
+    return dofs;
+  }
+
+
+
+  template <int dim>
+  bool
+  CondensedSystem<dim>::is_on_demand(
+    const Block<dim>                           &block,
+    const std::size_t                           n_contact_dofs,
+    const ContactParameters::FlexibilityColumns columns)
+  {
+    using Columns = ContactParameters::FlexibilityColumns;
+    return n_contact_dofs > 0 && block.has_fixed_stiffness() &&
+           (columns == Columns::on_demand ||
+            (columns == Columns::automatic && n_contact_dofs >= 500));
   }
 
 

@@ -117,6 +117,17 @@ namespace mbfem
 
 
 
+  void
+  DirectSolver::clear()
+  {
+    // The solver before its problem, as in factorize().
+    solver.reset();
+    linear_problem.reset();
+    matrix = nullptr;
+  }
+
+
+
   std::size_t
   DirectSolver::size() const
   {

@@ -272,12 +272,23 @@ namespace mbfem
     has_fixed_stiffness() const;
 
     /**
-     * The flexibility over @p dofs with its factorisation kept, for columns
-     * on demand (ContactFlexibility).
+     * Makes factorize() use MUMPS, for the block's solves too: a flexibility
+     * on demand reads selected entries of K^{-1} from MUMPS's factorisation,
+     * and one factorisation is then enough. Before factorize(), for a block
+     * whose flexibility will be on demand; only with has_fixed_stiffness().
+     */
+    void
+    set_flexibility_on_demand();
+
+    /**
+     * The flexibility over @p dofs with the block's MUMPS factorisation
+     * kept, for columns on demand (ContactFlexibility). Without
+     * set_flexibility_on_demand() before factorize(), the block's solves
+     * move to MUMPS here: Amesos's factorisation is freed first, so that
+     * the two are never held together.
      */
     std::unique_ptr<ContactFlexibility>
-    on_demand_flexibility(
-      const std::vector<types::global_dof_index> &dofs) const;
+    on_demand_flexibility(const std::vector<types::global_dof_index> &dofs);
 
     /**
      * Virtual work of the external load of the last assemble_load() in each
@@ -438,6 +449,15 @@ namespace mbfem
     make_constraints(const BoundaryConditions<dim> &boundary_conditions,
                      const std::vector<types::global_dof_index> &pins);
 
+    /**
+     * X = K^{-1} B for @p n_vectors right-hand sides (column-major, leading
+     * dimension n_dofs()) with the block's factorisation, whichever it is.
+     */
+    void
+    solve_stiffness(double            *x,
+                    const double      *b,
+                    const unsigned int n_vectors) const;
+
     /** sigma_0 at @p point, zero without an in-situ stress. */
     SymmetricTensor<2, dim>
     initial_stress(const Point<dim> &point) const;
@@ -499,10 +519,16 @@ namespace mbfem
     AffineConstraints<double>      homogeneous_constraints;
     FloatingModes<dim>             floating;
     TrilinosWrappers::SparseMatrix stiffness;
-    DirectSolver                   direct_solver;
-    Vector<double>                 load;
-    Vector<double>                 external_load;
-    Vector<double>                 physical_load;
+    /**
+     * The stiffness's one factorisation: Amesos's, or MUMPS's once the
+     * flexibility is on demand (shared with the ContactFlexibility objects,
+     * which read selected entries of K^{-1} from it).
+     */
+    DirectSolver                 direct_solver;
+    std::shared_ptr<MumpsSolver> mumps_solver;
+    Vector<double>               load;
+    Vector<double>               external_load;
+    Vector<double>               physical_load;
   };
 } // namespace mbfem
 

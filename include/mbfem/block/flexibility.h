@@ -48,9 +48,9 @@ namespace mbfem
 
   /**
    * A block's contact flexibility (as contact_flexibility()) on demand:
-   * the MUMPS factorisation is kept, and only the columns asked for are
-   * computed, as selected entries of K^{-1} (ICNTL(30)), so that a block
-   * with thousands of contact DoFs of which a few carry force costs
+   * the block's MUMPS factorisation is kept, and only the columns asked for
+   * are computed, as selected entries of K^{-1} (ICNTL(30)), so that a
+   * block with thousands of contact DoFs of which a few carry force costs
    * (contact DoFs x loaded DoFs), not (contact DoFs)^2. CondensedSystem
    * asks for the columns of the pairs that close.
    */
@@ -58,18 +58,17 @@ namespace mbfem
   {
   public:
     /**
-     * Factorises @p stiffness; arguments as contact_flexibility(). With
-     * @p comm of several ranks, only rank @p owner holds the factorisation
-     * (the others may pass an empty matrix), and only there may forms()
-     * and columns() be called (CondensedSystem broadcasts what they
-     * return).
+     * The flexibility over @p dofs from @p factorisation, the block's own
+     * factorisation of its stiffness (Block::on_demand_flexibility()),
+     * shared rather than repeated: the block solves with it too. The
+     * constraints as for contact_flexibility(). Under MPI only the block's
+     * owner holds the factorisation; elsewhere @p factorisation is null,
+     * and forms() and columns() may not be called (CondensedSystem
+     * broadcasts what they return).
      */
-    ContactFlexibility(const TrilinosWrappers::SparseMatrix       &stiffness,
-                       const AffineConstraints<double>            &constraints,
-                       const std::vector<types::global_dof_index> &dofs,
-                       const bool         positive_definite = true,
-                       const MPI_Comm     comm              = MPI_COMM_SELF,
-                       const unsigned int owner             = 0);
+    ContactFlexibility(std::shared_ptr<const MumpsSolver> factorisation,
+                       const AffineConstraints<double>   &constraints,
+                       const std::vector<types::global_dof_index> &dofs);
 
     ~ContactFlexibility();
 
@@ -107,8 +106,7 @@ namespace mbfem
     /** Each contact DoF as a combination of unconstrained DoFs (masters). */
     std::vector<unsigned int>                                 master_dofs;
     std::vector<std::vector<std::pair<unsigned int, double>>> weights;
-    std::unique_ptr<MumpsSolver>                              solver;
-    bool                                                      local;
+    std::shared_ptr<const MumpsSolver>                        solver;
   };
 } // namespace mbfem
 

@@ -105,6 +105,25 @@ namespace mbfem
     set_flexibility_columns(
       const ContactParameters::FlexibilityColumns columns);
 
+    /**
+     * The contact DoFs of block @p b among @p pairs: those of the nodes of
+     * its pair sides, each once, in the order of the pairs.
+     */
+    static std::vector<types::global_dof_index>
+    contact_dofs(const std::vector<ContactPair<dim>> &pairs,
+                 const unsigned int                   b);
+
+    /**
+     * Whether the flexibility of @p block over @p n_contact_dofs contact
+     * DoFs is on demand under @p columns: the one rule, which also lets a
+     * block choose its factorisation before it is computed
+     * (Block::set_flexibility_on_demand()).
+     */
+    static bool
+    is_on_demand(const Block<dim>                           &block,
+                 const std::size_t                           n_contact_dofs,
+                 const ContactParameters::FlexibilityColumns columns);
+
     /** Whether every side of pair @p k is on a block on demand. */
     bool
     on_demand(const unsigned int k) const;
@@ -222,10 +241,12 @@ namespace mbfem
 
     /**
      * setup(), per block: the pair sides on @p block (number @p b), and
-     * H_b (or its diagonal on demand) where this rank owns the block.
+     * H_b (or its diagonal on demand) where this rank owns the block. Not
+     * const: on demand, the block's solves move to the factorisation the
+     * columns come from (Block::on_demand_flexibility()).
      */
     void
-    add_block(const Block<dim> &block, const unsigned int b);
+    add_block(Block<dim> &block, const unsigned int b);
 
     /**
      * setup(), under mpirun: H_b (or its diagonal on demand) from each

@@ -64,6 +64,13 @@ namespace mbfem
     void
     solve(double *x, const double *b, const unsigned int n_vectors) const;
 
+    /**
+     * Frees the factorisation (size() is then 0): for a block whose solves
+     * move to another one (Block::on_demand_flexibility()).
+     */
+    void
+    clear();
+
     std::size_t
     size() const;
 
