@@ -117,31 +117,55 @@ namespace mbfem
 
 
   template <int dim>
+  bool
+  MultiBodyProblem<dim>::factorises_blocks() const
+  {
+    return !parameters.contact.declares_interfaces() ||
+           parameters.contact.runs_condensed();
+  }
+
+
+
+  template <int dim>
   void
   MultiBodyProblem<dim>::setup_blocks()
   {
-    // The monolithic formulation alone factorises no block: its one system
-    // holds them all.
-    const bool factorise = !parameters.contact.declares_interfaces() ||
-                           parameters.contact.runs_condensed();
     parameters.boundary_conditions.set_time(0.);
-    // Under mpirun each rank factorises its own blocks at the same time.
     Parallel::together(MPI_COMM_WORLD, [&]() {
       for (const auto &block : blocks)
         {
-          {
-            TimerOutput::Scope t(timer, "assembly");
-            block->setup_system(parameters.boundary_conditions);
-            if (factorise)
-              block->assemble_stiffness();
-          }
-          if (factorise)
-            {
-              TimerOutput::Scope t(timer, "factorisation");
-              Timer              clock;
-              block->factorize();
-              condensed_seconds += clock.wall_time();
-            }
+          TimerOutput::Scope t(timer, "assembly");
+          block->setup_system(parameters.boundary_conditions);
+          if (factorises_blocks())
+            block->assemble_stiffness();
+        }
+    });
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::factorize_blocks(
+    const std::vector<ContactPair<dim>> &pairs)
+  {
+    if (!factorises_blocks())
+      return;
+    // Under mpirun each rank factorises its own blocks at the same time.
+    Parallel::together(MPI_COMM_WORLD, [&]() {
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        {
+          const std::size_t n_contact_dofs =
+            CondensedSystem<dim>::contact_dofs(pairs, b).size();
+          if (CondensedSystem<dim>::is_on_demand(
+                *blocks[b],
+                n_contact_dofs,
+                parameters.contact.flexibility_columns))
+            blocks[b]->set_flexibility_on_demand();
+          TimerOutput::Scope t(timer, "factorisation");
+          Timer              clock;
+          blocks[b]->factorize();
+          condensed_seconds += clock.wall_time();
         }
     });
   }
@@ -266,6 +290,7 @@ namespace mbfem
     if (parameters.contact.declares_interfaces())
       pairs = find_contact_pairs(blocks, parameters.contact, pcout);
     check_blocks_held(pairs);
+    factorize_blocks(pairs);
 
     const ContactParameters &contact_parameters = parameters.contact;
     AssertThrow(!parameters.plasticity.newton || pairs.empty() ||

@@ -75,8 +75,26 @@ namespace mbfem
     void
     share_solutions();
 
+    /**
+     * Whether the blocks are factorised: not if the monolithic formulation
+     * alone runs, whose one system holds them all.
+     */
+    bool
+    factorises_blocks() const;
+
+    /** Each block's DoFs, constraints and stiffness (not yet factorised). */
     void
     setup_blocks();
+
+    /**
+     * Factorises each block's stiffness on its owner, if
+     * factorises_blocks(): with MUMPS where the block's flexibility will be
+     * on demand among @p pairs (its columns are entries of that
+     * factorisation's inverse), so that the block does not hold Amesos's
+     * as well; hence after the pairs are found.
+     */
+    void
+    factorize_blocks(const std::vector<ContactPair<dim>> &pairs);
 
     /** The blocks' sizes, materials and free rigid-body modes. */
     void
