@@ -21,7 +21,9 @@ namespace mbfem
    * solves, several times cheaper than solving against dense unit loads
    * (design.md section 4: 5.0 s against 11.8 s for 4131 contact DoFs of a
    * 37,179-DoF block; the Schur complement of ICNTL(19) and its inverse,
-   * the other road, 5.3 s).
+   * the other road, 5.3 s). A block whose flexibility is on demand also
+   * solves with it (Block::set_flexibility_on_demand()), so that it holds
+   * one factorisation, not this one beside Amesos's.
    *
    * Debian's MUMPS has no METIS or SCOTCH: the ordering is PORD. Not
    * thread-safe: one object is used by one thread at a time.
