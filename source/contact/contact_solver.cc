@@ -332,8 +332,8 @@ namespace mbfem
     fast_iterations = 0;
     path_switches   = 0;
     path_broken.clear();
-    MethodOutcome verdict;
-    bool          verdict_is_primary = false;
+    StateMethodOutcome verdict;
+    bool               verdict_is_primary = false;
     // Why Lemke's method, the semismooth Newton method and the
     // continuation failed, said after the verdict where it is another
     // method's.
@@ -341,7 +341,7 @@ namespace mbfem
     for (const StateMethod m : methods)
       {
         method = m; // the one running, for the progress line
-        const MethodOutcome outcome =
+        const StateMethodOutcome outcome =
           run_method(m, increment, from_last_solve, m != methods.back());
         if (m == StateMethod::fast)
           fast_iterations = outcome.iterations;
@@ -388,14 +388,14 @@ namespace mbfem
 
 
   template <int dim>
-  typename ContactSolver<dim>::MethodOutcome
+  StateMethodOutcome
   ContactSolver<dim>::run_method(const StateMethod  m,
                                  const unsigned int increment,
                                  const bool         from_last_solve,
                                  const bool         followed)
   {
-    MethodOutcome     outcome;
-    const std::string head = "Load increment " + std::to_string(increment);
+    StateMethodOutcome outcome;
+    const std::string  head = "Load increment " + std::to_string(increment);
     if (m == StateMethod::fast)
       {
         // Its answer is refused where the states leave a mechanism (every
@@ -434,24 +434,10 @@ namespace mbfem
     const Trial                       trial        = current;
     const Vector<double>              solution     = current_solution;
     const std::vector<Tensor<1, dim>> displacement = current_displacement;
-    if (m == StateMethod::semismooth_newton || m == StateMethod::lemke)
-      {
-        const bool  is_lemke = (m == StateMethod::lemke);
-        std::string why;
-        outcome.converged =
-          is_lemke ? lemke(increment, outcome.iterations, why) :
-                     semismooth_newton(increment, outcome.iterations, why);
-        outcome.failure =
-          head + ": " +
-          (is_lemke ? "Lemke's method " : "the semismooth Newton method ") +
-          why + (why.back() == '.' ? "" : ".");
-      }
-    else
-      {
-        outcome.converged = load_continuation(increment, outcome.iterations);
-        outcome.failure   = head + ": the load continuation did not "
-                                   "conclude.";
-      }
+    outcome =
+      (m == StateMethod::semismooth_newton ? semismooth_newton(increment) :
+       m == StateMethod::lemke             ? lemke(increment) :
+                                             load_continuation(increment));
     if (!outcome.converged)
       {
         current              = trial;
@@ -464,7 +450,7 @@ namespace mbfem
 
 
   template <int dim>
-  typename ContactSolver<dim>::MethodOutcome
+  StateMethodOutcome
   ContactSolver<dim>::run_load_path(const unsigned int increment)
   {
     // The path does not conclude where in 3D it pivots in a cycle at one
@@ -485,11 +471,11 @@ namespace mbfem
                        loads,
                        trial_solve());
     const auto    end = path.run("Load increment " + std::to_string(increment));
-    MethodOutcome outcome;
-    outcome.iterations     = end.switches;
+    StateMethodOutcome outcome;
+    outcome.iterations     = end.iterations;
     outcome.no_equilibrium = end.no_equilibrium;
     outcome.failure        = end.failure;
-    path_switches          = end.switches;
+    path_switches          = end.iterations;
     // Where the path reached s = 1 it found its states there: the second
     // certificate is for a path that stopped.
     if (end.reached_end)
@@ -507,9 +493,9 @@ namespace mbfem
 
   template <int dim>
   void
-  ContactSolver<dim>::finish_path(const Trial       &states,
-                                  const unsigned int increment,
-                                  MethodOutcome     &outcome)
+  ContactSolver<dim>::finish_path(const Trial        &states,
+                                  const unsigned int  increment,
+                                  StateMethodOutcome &outcome)
   {
     const std::string head = "Load increment " + std::to_string(increment);
     // At s = 1: the states the path ended with, solved and checked as the
@@ -586,15 +572,23 @@ namespace mbfem
      * wedge).
      */
     constexpr double elastic_slip_factor = 1e3;
+
+    /** "Load increment 3: the semismooth Newton method did not ...". */
+    std::string
+    method_failure(const unsigned int increment,
+                   const std::string &method,
+                   const std::string &why)
+    {
+      return "Load increment " + std::to_string(increment) + ": " + method +
+             " " + why + (!why.empty() && why.back() == '.' ? "" : ".");
+    }
   } // namespace
 
 
 
   template <int dim>
-  bool
-  ContactSolver<dim>::semismooth_newton(const unsigned int increment,
-                                        unsigned int      &iterations,
-                                        std::string       &failure)
+  StateMethodOutcome
+  ContactSolver<dim>::semismooth_newton(const unsigned int increment)
   {
     // From the last increment's answer, solved for these pairs and not
     // all zero, as any incremental Newton method: its states are near the
@@ -628,21 +622,23 @@ namespace mbfem
                                  loads,
                                  committed,
                                  committed_displacement);
-    if (!newton.solve(start, iterations))
-      {
-        failure = "did not converge: " + newton.failure();
-        return false;
-      }
-    return settle(newton.answer_states(), increment, iterations, failure);
+    StateMethodOutcome    outcome;
+    if (newton.solve(start, outcome.iterations))
+      settle(newton.answer_states(), increment, outcome);
+    else
+      outcome.failure = "did not converge: " + newton.failure();
+    if (!outcome.converged)
+      outcome.failure = method_failure(increment,
+                                       "the semismooth Newton method",
+                                       outcome.failure);
+    return outcome;
   }
 
 
 
   template <int dim>
-  bool
-  ContactSolver<dim>::lemke(const unsigned int increment,
-                            unsigned int      &iterations,
-                            std::string       &failure)
+  StateMethodOutcome
+  ContactSolver<dim>::lemke(const unsigned int increment)
   {
     // The problem without W first: the method's size says whether W, the
     // costly part, is needed at all.
@@ -653,43 +649,42 @@ namespace mbfem
                             method_parameters.lemke_pivots_per_variable);
     if (method.size() <= method_parameters.lemke_max_variables)
       condensed->add_entries(problem.W);
-    if (!method.solve(iterations))
-      {
-        failure = method.failure();
-        return false;
-      }
-    return settle(method.answer_states(committed),
-                  increment,
-                  iterations,
-                  failure);
+    StateMethodOutcome outcome;
+    if (method.solve(outcome.iterations))
+      settle(method.answer_states(committed), increment, outcome);
+    else
+      outcome.failure = method.failure();
+    if (!outcome.converged)
+      outcome.failure =
+        method_failure(increment, "Lemke's method", outcome.failure);
+    return outcome;
   }
 
 
 
   template <int dim>
-  bool
-  ContactSolver<dim>::settle(const Trial       &states,
-                             const unsigned int increment,
-                             unsigned int      &iterations,
-                             std::string       &failure)
+  void
+  ContactSolver<dim>::settle(const Trial        &states,
+                             const unsigned int  increment,
+                             StateMethodOutcome &outcome)
   {
     const auto polish = fast_iteration(states, increment);
-    iterations += polish.iterations;
+    outcome.iterations += polish.iterations;
     if (!polish.converged)
       {
-        failure = "found an answer, but its states did not settle in the "
-                  "fast iteration that checks them";
-        return false;
+        outcome.failure = "found an answer, but its states did not settle "
+                          "in the fast iteration that checks them";
+        return;
       }
     const std::string moving = refused_mechanism();
     if (!moving.empty())
       {
-        failure = "found an answer, but it was refused: its states leave "
-                  "a mechanism:" +
-                  moving;
-        return false;
+        outcome.failure = "found an answer, but it was refused: its states "
+                          "leave a mechanism:" +
+                          moving;
+        return;
       }
-    return true;
+    outcome.converged = true;
   }
 
 
@@ -737,9 +732,8 @@ namespace mbfem
 
 
   template <int dim>
-  bool
-  ContactSolver<dim>::load_continuation(const unsigned int increment,
-                                        unsigned int      &iterations)
+  StateMethodOutcome
+  ContactSolver<dim>::load_continuation(const unsigned int increment)
   {
     // The increment's load scaled up (its data extrapolated past s = 1),
     // where a gap that a block must close by a rigid motion weighs less
@@ -748,20 +742,25 @@ namespace mbfem
     // toppling pair with a tenth of its weight in increment 1: the fast
     // iteration concludes at ten times that load, and each step back in
     // one iteration.
-    Trial trial  = committed;
-    bool  solved = true;
+    StateMethodOutcome outcome;
+    Trial              trial  = committed;
+    bool               solved = true;
     for (const double s : method_parameters.continuation_factors)
       {
         set_load_fraction(s);
-        const auto outcome = fast_iteration(trial, increment);
-        iterations += outcome.iterations;
-        solved = outcome.converged;
+        const auto step = fast_iteration(trial, increment);
+        outcome.iterations += step.iterations;
+        solved = step.converged;
         if (!solved)
           break;
         trial = current;
       }
     set_load_fraction(1.);
-    return solved && refused_mechanism().empty();
+    outcome.converged = solved && refused_mechanism().empty();
+    if (!outcome.converged)
+      outcome.failure = "Load increment " + std::to_string(increment) +
+                        ": the load continuation did not conclude.";
+    return outcome;
   }
 
 
