@@ -5,12 +5,20 @@
 // limit by 10 N against a tolerance of 1 N (so each case is decided by the
 // law, not the tolerance), with cohesion and tension gone once broken and
 // friction gone for tensile slip; the semismooth Newton method's disc
-// (scaled units, cohesion only where held closed) and its stick test; and
-// strength reduction dividing all three strengths.
+// (scaled units, cohesion only where held closed) and its stick test;
+// strength reduction dividing all three strengths; and the statics
+// certificate's polygonal cones: a force on the circle |r_T| = c A + mu r_N
+// is inside the circumscribed polygon (largest row excess 0 where it
+// touches a facet, below 0 between) and outside the inscribed one except
+// at its vertices, and the cone with its apex at the cut-off carries
+// c A + mu (r_N + sigma_t A). Excesses print in kN to 3 decimals: a facet
+// misplaced by 1 N shows.
 
 #include <mbfem/interface/joint_law.h>
 
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace
 {
@@ -18,6 +26,21 @@ namespace
   yes(const bool b)
   {
     return b ? "yes" : "no";
+  }
+
+  /** The largest normal r_N + tangent . r_T - bound over @p facets. */
+  double
+  excess(const std::vector<mbfem::JointLaw::ConeFacet> &facets,
+         const double                                   r_n,
+         const double                                   t1,
+         const double                                   t2)
+  {
+    double worst = -1e300;
+    for (const auto &f : facets)
+      worst = std::fmax(worst,
+                        f.normal * r_n + f.tangent[0] * t1 + f.tangent[1] * t2 -
+                          f.bound);
+    return worst;
   }
 } // namespace
 
@@ -73,4 +96,38 @@ main()
               reduced.shear_strength(200e3, A, false) / 1e3,
               reduced.tensile_limit(A, false) / 1e3,
               law.reduced(2., false).tensile_limit(A, false) / 1e3);
+
+  // Polygonal cones at r_N = 200 kN, where the circle's radius is 170 kN;
+  // in 3D 8 sides, facet normals at 0, 45, ... degrees, vertices between.
+  const double pi = 3.14159265358979323846, R = 170e3;
+  const auto   outer = law.polygonal_cone(8, A, false, false, 1.);
+  const auto inner = law.polygonal_cone(8, A, false, false, std::cos(pi / 8.));
+  for (const double degrees : {0., 22.5, 30.})
+    {
+      const double a = degrees * pi / 180.;
+      std::printf("circle at %4.1f deg: excess over the circumscribed "
+                  "polygon %.3f kN, the inscribed %.3f kN\n",
+                  degrees,
+                  excess(outer, 200e3, R * std::cos(a), R * std::sin(a)) / 1e3,
+                  excess(inner, 200e3, R * std::cos(a), R * std::sin(a)) / 1e3);
+    }
+  // 2D: two facets, +-t.
+  const auto line = law.polygonal_cone(2, A, false, false, 1.);
+  std::printf("2D: excess at r_T = +170 kN %.3f kN, -170 kN %.3f kN, "
+              "-171 kN %.3f kN\n",
+              excess(line, 200e3, R, 0.) / 1e3,
+              excess(line, 200e3, -R, 0.) / 1e3,
+              excess(line, 200e3, -171e3, 0.) / 1e3);
+  // Apex at the cut-off: at r_N = -25 kN the cone carries 50 kN; broken,
+  // the cone of friction alone from r_N = 0.
+  const auto cutoff = law.polygonal_cone(2, A, false, true, 1.);
+  const auto broken = law.polygonal_cone(2, A, true, true, 1.);
+  std::printf("apex at the cut-off: excess at (-25 kN, 50 kN) %.3f kN; "
+              "broken at (0, 0) %.3f kN, (200 kN, 120 kN) %.3f kN\n",
+              excess(cutoff, -25e3, 50e3, 0.) / 1e3,
+              excess(broken, 0., 0., 0.) / 1e3,
+              excess(broken, 200e3, 120e3, 0.) / 1e3);
+  // The Newton method's tension margin, forces scaled by 1e-6.
+  std::printf("tension margin at -20 kN, scaled by 1e-6: %.4f\n",
+              law.tension_margin(-20e3 * scale, A, false, scale));
 }

@@ -171,10 +171,10 @@ namespace mbfem
             switches > max_switches)
           {
             Outcome cycle;
-            cycle.switches = switches;
-            cycle.states   = trial;
-            cycle.s        = s;
-            cycle.failure  = head +
+            cycle.iterations = switches;
+            cycle.states     = trial;
+            cycle.s          = s;
+            cycle.failure    = head +
                             ": the load path cannot continue: the states of "
                             "pair " +
                             std::to_string(event.pair) +
@@ -185,7 +185,7 @@ namespace mbfem
       }
     Outcome end;
     end.reached_end = true;
-    end.switches    = switches;
+    end.iterations  = switches;
     end.states      = trial;
     end.s           = 1.;
     return end;
@@ -631,7 +631,7 @@ namespace mbfem
   {
     Outcome           end;
     const std::string motion = mechanisms.describe(trial);
-    end.switches             = switches;
+    end.iterations           = switches;
     end.states               = trial;
     end.s                    = s;
     end.no_equilibrium       = !motion.empty();

@@ -622,9 +622,11 @@ namespace mbfem
         const auto &pair = pairs[k];
         if (pair.tied || held[k][0] || !is_bilateral(k, system.broken))
           continue;
-        const double limit =
-          condensed.scale() * pair.joint.tensile_limit(pair.area, false);
-        const double over = (-limit - system.u(k * dim)) / force;
+        const double over = -pair.joint.tension_margin(system.u(k * dim),
+                                                       pair.area,
+                                                       false,
+                                                       condensed.scale()) /
+                            force;
         if (over > state_tolerance && over > excess)
           {
             excess = over;

@@ -87,32 +87,22 @@ namespace mbfem
     }
 
     /**
-     * The facets r_t . e_j <= kappa (strength + mu r_n) of one sliding
-     * pair whose normal force is column @p first_column (2 in 2D).
+     * The rows of the polygonal cone @p facets (JointLaw::polygonal_cone())
+     * of a pair whose normal force is column @p first_column, its tangents
+     * the next dim - 1.
      */
     template <int dim>
     void
-    add_cone_facets(LinearProgram     &lp,
-                    const unsigned int first_column,
-                    const unsigned int n_facets,
-                    const double       kappa,
-                    const double       strength,
-                    const double       mu)
+    add_cone_facets(LinearProgram                          &lp,
+                    const unsigned int                      first_column,
+                    const std::vector<JointLaw::ConeFacet> &facets)
     {
-      const double       inf     = COIN_DBL_MAX;
-      const unsigned int n_sides = (dim == 2 ? 2 : n_facets);
-      for (unsigned int j = 0; j < n_sides; ++j)
+      for (const JointLaw::ConeFacet &facet : facets)
         {
-          const unsigned int row = lp.add_row(-inf, kappa * strength);
-          lp.add(row, first_column, -kappa * mu);
-          if (dim == 2)
-            lp.add(row, first_column + 1, j == 0 ? 1. : -1.);
-          else
-            {
-              const double angle = 2. * numbers::PI * j / n_sides;
-              lp.add(row, first_column + 1, std::cos(angle));
-              lp.add(row, first_column + dim - 1, std::sin(angle));
-            }
+          const unsigned int row = lp.add_row(-COIN_DBL_MAX, facet.bound);
+          lp.add(row, first_column, facet.normal);
+          for (unsigned int d = 1; d < dim; ++d)
+            lp.add(row, first_column + d, facet.tangent[d - 1]);
         }
     }
 
@@ -231,16 +221,12 @@ namespace mbfem
 
 
   template <int dim>
-  std::array<double, 3>
-  StaticAdmissibility<dim>::strength_of(const Candidate &pair,
-                                        const double     factor) const
+  std::pair<JointLaw, double>
+  StaticAdmissibility<dim>::law_of(const Candidate &pair,
+                                   const double     factor) const
   {
     // Strength reduction is JointLaw's: tan(phi), c and sigma_t over F.
-    const JointLaw law  = pair.joint.reduced(factor);
-    const double   area = pair.area / force_scale;
-    return {{law.friction_coefficient,
-             law.shear_strength(0., area, pair.broken),
-             law.tensile_limit(area, pair.broken)}};
+    return {pair.joint.reduced(factor), pair.area / force_scale};
   }
 
 
@@ -266,16 +252,25 @@ namespace mbfem
     std::vector<unsigned int> first_column(active.size());
     for (unsigned int i = 0; i < active.size(); ++i)
       {
-        const Candidate &pair              = candidates[active[i]];
-        const auto [mu, cohesion, tension] = strength_of(pair, factor);
-        first_column[i]                    = add_force_columns<dim>(
-          lp, coupling, active[i] * dim, pair.tied, pair.held, tension);
+        const Candidate &pair  = candidates[active[i]];
+        const auto [law, area] = law_of(pair, factor);
+        first_column[i] =
+          add_force_columns<dim>(lp,
+                                 coupling,
+                                 active[i] * dim,
+                                 pair.tied,
+                                 pair.held,
+                                 law.tensile_limit(area, pair.broken));
         if (pair.tied)
           continue;
         // |r_t| <= c A + mu r_n (+ mu sigma_t A, circumscribed).
-        const double strength = cohesion + (circumscribed ? mu * tension : 0.);
-        add_cone_facets<dim>(
-          lp, first_column[i], n_facets, kappa, strength, mu);
+        add_cone_facets<dim>(lp,
+                             first_column[i],
+                             law.polygonal_cone(dim == 2 ? 2 : n_facets,
+                                                area,
+                                                pair.broken,
+                                                circumscribed,
+                                                kappa));
       }
 
     ClpSimplex model;
@@ -471,9 +466,10 @@ namespace mbfem
       add_equilibrium_rows(lp, external_resultant, force_scale);
     for (const unsigned int k : active)
       {
-        const Candidate &pair              = candidates[k];
-        const auto [mu, cohesion, tension] = strength_of(pair, factor);
-        double slip                        = 0.;
+        const Candidate &pair  = candidates[k];
+        const auto [law, area] = law_of(pair, factor);
+        const double tension   = law.tensile_limit(area, pair.broken);
+        double       slip      = 0.;
         for (unsigned int d = 1; d < dim; ++d)
           slip += w[k * dim + d] * w[k * dim + d];
         slip                  = std::sqrt(slip);
@@ -494,8 +490,13 @@ namespace mbfem
             const unsigned int first = add_force_columns<dim>(
               lp, coupling, k * dim, pair.tied, pair.held, tension);
             if (!pair.tied)
-              add_cone_facets<dim>(
-                lp, first, n_facets, 1., cohesion + mu * tension, mu);
+              add_cone_facets<dim>(lp,
+                                   first,
+                                   law.polygonal_cone(dim == 2 ? 2 : n_facets,
+                                                      area,
+                                                      pair.broken,
+                                                      true,
+                                                      1.));
             continue;
           }
         // Sliding: normal force N, shear tau against the slip s, at most
@@ -519,9 +520,12 @@ namespace mbfem
               along -= coupling(k * dim + d, a) * s[d];
             lp.add(a, shear, along);
           }
-        const unsigned int strength = lp.add_row(-inf, cohesion + mu * tension);
-        lp.add(strength, shear, 1.);
-        lp.add(strength, normal, -mu);
+        // The facet against the slip: tau <= c A + mu (N + sigma_t A).
+        const JointLaw::ConeFacet facet =
+          law.cone_facet({{1., 0.}}, area, pair.broken, true);
+        const unsigned int strength = lp.add_row(-inf, facet.bound);
+        lp.add(strength, shear, facet.tangent[0]);
+        lp.add(strength, normal, facet.normal);
         if (dim == 3)
           {
             const unsigned int turn = lp.add_column(-inf, inf, 0.);

@@ -443,22 +443,13 @@ namespace mbfem
     void
     set_increment_data(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
 
-    /** One method's attempt at an increment. */
-    struct MethodOutcome
-    {
-      bool         converged      = false;
-      bool         no_equilibrium = false; // its verdict: no equilibrium
-      unsigned int iterations     = 0;
-      std::string  failure;
-    };
-
     /**
      * Runs @p method on the increment. Where the semismooth Newton method
      * or the load continuation fails, the current states are those before
      * it (which the certificate then reads); the fast iteration and the
      * load path leave theirs. @p followed: another method comes after it.
      */
-    MethodOutcome
+    StateMethodOutcome
     run_method(const StateMethod  method,
                const unsigned int increment,
                const bool         from_last_solve,
@@ -468,53 +459,48 @@ namespace mbfem
      * run_method() for the load path (LoadPath), from set_path_start();
      * where it reaches s = 1, its states polished by finish_path().
      */
-    MethodOutcome
+    StateMethodOutcome
     run_load_path(const unsigned int increment);
 
     /**
      * The semismooth Newton method (SemismoothNewton), by default where the
      * fast iteration and the load path both failed ('Contact/State method'
      * sets the order), from the increment's bonded answer; its states then
-     * polished by the fast iteration: true if that found the increment's
-     * solution, which is then current. Adds the Newton steps and the
-     * polishing fast iteration's to @p iterations; says why not in
-     * @p failure.
+     * polished by the fast iteration: converged if that found the
+     * increment's solution, which is then current. Its iterations are the
+     * Newton steps and the polishing fast iteration's.
      */
-    bool
-    semismooth_newton(const unsigned int increment,
-                      unsigned int      &iterations,
-                      std::string       &failure);
+    StateMethodOutcome
+    semismooth_newton(const unsigned int increment);
 
     /**
      * Lemke's method (LemkeMethod) on the increment's condensed problem
      * from the committed states; its states then polished by the fast
-     * iteration, as semismooth_newton()'s. Adds the pivots and the fast
-     * iteration's to @p iterations; says why not in @p failure.
+     * iteration, as semismooth_newton()'s. Its iterations are the pivots
+     * and the fast iteration's.
      */
-    bool
-    lemke(const unsigned int increment,
-          unsigned int      &iterations,
-          std::string       &failure);
+    StateMethodOutcome
+    lemke(const unsigned int increment);
 
     /**
      * The fast iteration from the @p states a method found, and the
-     * mechanism test of its answer: true if they stand, the answer then
-     * current. Adds its iterations; says why not in @p failure.
+     * mechanism test of its answer: @p outcome, a method's that found
+     * @p states, converges if they stand, the answer then current; it
+     * counts the fast iteration's iterations too.
      */
-    bool
-    settle(const Trial       &states,
-           const unsigned int increment,
-           unsigned int      &iterations,
-           std::string       &failure);
+    void
+    settle(const Trial        &states,
+           const unsigned int  increment,
+           StateMethodOutcome &outcome);
 
     /**
      * The load continuation: the fast iteration at each of 'Contact/Load
      * continuation/Load factors' (10, 5, 2, 1) times the increment's load,
-     * each from the states of the last; true if it concluded at 1 with an
-     * acceptable answer, which is then current.
+     * each from the states of the last; converged if it concluded at 1
+     * with an acceptable answer, which is then current.
      */
-    bool
-    load_continuation(const unsigned int increment, unsigned int &iterations);
+    StateMethodOutcome
+    load_continuation(const unsigned int increment);
 
     /**
      * The mechanism for which the current answer of the Newton method or
@@ -547,9 +533,9 @@ namespace mbfem
      * (a failure counts the path's switches only).
      */
     void
-    finish_path(const Trial       &states,
-                const unsigned int increment,
-                MethodOutcome     &outcome);
+    finish_path(const Trial        &states,
+                const unsigned int  increment,
+                StateMethodOutcome &outcome);
 
     /**
      * Sets the data of the increment to the load fraction @p s: s = 1 is

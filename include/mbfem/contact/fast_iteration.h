@@ -4,6 +4,7 @@
 #include <mbfem/contact/contact_state.h>
 #include <mbfem/contact/mechanism_test.h>
 #include <mbfem/contact/state_check.h>
+#include <mbfem/contact/state_method.h>
 #include <mbfem/interface/contact_interface.h>
 
 #include <deal.II/base/tensor.h>
@@ -45,13 +46,9 @@ namespace mbfem
       bool(const Trial &, Vector<double> &solution, Vector<double> &d)>;
 
     /** How the iteration ended, and its answer where it converged. */
-    struct Outcome
+    struct Outcome : StateMethodOutcome
     {
-      bool         converged      = false;
-      bool         no_equilibrium = false; // a singular trial, not a cycle
-      unsigned int iterations     = 0;
-      std::string  failure;
-
+      // no_equilibrium: a singular trial, not a cycle; iterations: solves.
       /** The converged states (slip directions updated by the check). */
       Trial          states;
       Vector<double> solution, displacement;

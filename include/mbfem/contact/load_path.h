@@ -43,12 +43,12 @@ namespace mbfem
     using Trial = StateTrial<dim>;
 
     /** How the path ended. */
-    struct Outcome
+    struct Outcome : StateMethodOutcome
     {
-      bool         reached_end    = false; // s = 1, with states
-      bool         no_equilibrium = false; // a mechanism no switch mends
-      unsigned int switches       = 0;
-      std::string  failure;
+      // converged stays false: the states at s = 1 are still to be solved
+      // and checked (ContactSolver::finish_path()). no_equilibrium: a
+      // mechanism no switch mends; iterations: the switches.
+      bool reached_end = false; // s = 1, with states
       /**
        * The states where the path ended: at s = 1 where reached_end, else
        * where it stopped. Their broken flags are the joints the path broke

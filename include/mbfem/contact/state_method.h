@@ -40,6 +40,21 @@ namespace mbfem
   std::string
   to_string(const StateMethod method);
 
+  /**
+   * How one method of the state iteration ended on an increment: whether
+   * it concluded, whether its verdict is "no equilibrium" (a mechanism, a
+   * singular trial), its iterations (solves, switches, Newton steps or
+   * pivots, with those of the fast iteration that checks its answer) and,
+   * where it did not conclude, why. A method's own outcome adds its answer.
+   */
+  struct StateMethodOutcome
+  {
+    bool         converged      = false;
+    bool         no_equilibrium = false;
+    unsigned int iterations     = 0;
+    std::string  failure;
+  };
+
   /** The choices of 'Contact/State method', as a ParameterHandler pattern. */
   std::string
   state_method_names();

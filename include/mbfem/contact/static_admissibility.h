@@ -9,6 +9,7 @@
 #include <array>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mbfem
@@ -213,12 +214,12 @@ namespace mbfem
     add_mechanism_factor(Result &result) const;
 
     /**
-     * mu / F, and c A / F and sigma_t A / F in the LP's force units (zero
-     * for a broken pair), of @p pair with its strength divided by
-     * @p strength_factor.
+     * The joint law of @p pair with its strength divided by
+     * @p strength_factor (JointLaw::reduced()), and its area in the LP's
+     * force units.
      */
-    std::array<double, 3>
-    strength_of(const Candidate &pair, const double strength_factor) const;
+    std::pair<JointLaw, double>
+    law_of(const Candidate &pair, const double strength_factor) const;
 
     /** The relative velocity P_hat v of every pair, in its frame. */
     std::vector<double>

@@ -2,6 +2,9 @@
 #define mbfem_interface_joint_law_h
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
 
 namespace mbfem
 {
@@ -12,8 +15,8 @@ namespace mbfem
    * and carries tension up to sigma_t A; once it breaks (tension beyond
    * that, or opening) it keeps c = sigma_t = 0. This is the one place that
    * says so: the fast iteration's checks, the load path's margins, the
-   * Newton method's friction disc and the certificate's strength
-   * reduction all ask it (doc/contact_solver.md).
+   * Newton method's friction disc, the certificate's polygonal cones and
+   * its strength reduction all ask it (doc/contact_solver.md).
    */
   struct JointLaw
   {
@@ -45,12 +48,17 @@ namespace mbfem
 
     /**
      * How far a pair at normal force @p r_n is inside the tension cut-off
-     * (> 0 inside), as a force: the load path's margin, and the check's.
+     * (> 0 inside), as a force: the load path's margin, the check's, and
+     * the Newton method's in its units, where a force is @p scale times
+     * larger.
      */
     double
-    tension_margin(const double r_n, const double area, const bool broken) const
+    tension_margin(const double r_n,
+                   const double area,
+                   const bool   broken,
+                   const double scale = 1.) const
     {
-      return r_n + tensile_limit(area, broken);
+      return r_n + scale * tensile_limit(area, broken);
     }
 
     /**
@@ -136,6 +144,65 @@ namespace mbfem
       if (reduce_tension)
         law.tensile_strength /= factor;
       return law;
+    }
+
+    /**
+     * A facet of the friction cone as a row of a linear program:
+     * normal r_N + tangent . r_T <= bound, r_T in the pair's tangents
+     * (the second zero in 2D).
+     */
+    struct ConeFacet
+    {
+      double                normal = 0.;
+      std::array<double, 2> tangent{{0., 0.}};
+      double                bound = 0.;
+    };
+
+    /**
+     * The facet e . r_T <= kappa (c A + mu r_N) of the cone of a pair of
+     * area @p area, for the unit tangent @p e; with @p apex_at_cutoff its
+     * apex moves from r_N = -c A / mu to the tension cut-off,
+     * kappa (c A + mu (r_N + sigma_t A)), so that the cone contains every
+     * force the law admits, tension included.
+     */
+    ConeFacet
+    cone_facet(const std::array<double, 2> &e,
+               const double                 area,
+               const bool                   broken,
+               const bool                   apex_at_cutoff,
+               const double                 kappa = 1.) const
+    {
+      const double strength =
+        shear_strength(0., area, broken) +
+        (apex_at_cutoff ? friction_coefficient * tensile_limit(area, broken) :
+                          0.);
+      return {-kappa * friction_coefficient, e, kappa * strength};
+    }
+
+    /**
+     * The cone as a polygon of @p n_sides facets for the statics
+     * certificate's linear programs: 2 in 2D (e = +-t), in 3D the unit
+     * tangents at angles 2 pi j / n_sides. kappa = 1 circumscribes the
+     * circle |r_T| = c A + mu r_N, cos(pi / n_sides) inscribes it.
+     */
+    std::vector<ConeFacet>
+    polygonal_cone(const unsigned int n_sides,
+                   const double       area,
+                   const bool         broken,
+                   const bool         apex_at_cutoff,
+                   const double       kappa) const
+    {
+      std::vector<ConeFacet> facets;
+      for (unsigned int j = 0; j < n_sides; ++j)
+        {
+          const double angle = 2. * 3.14159265358979323846 * j / n_sides;
+          const std::array<double, 2> e =
+            (n_sides == 2 ?
+               std::array<double, 2>{{j == 0 ? 1. : -1., 0.}} :
+               std::array<double, 2>{{std::cos(angle), std::sin(angle)}});
+          facets.push_back(cone_facet(e, area, broken, apex_at_cutoff, kappa));
+        }
+      return facets;
     }
 
     /** Whether a pair of this joint breaks when it opens or fails. */
