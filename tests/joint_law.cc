@@ -10,9 +10,9 @@
 // certificate's polygonal cones: a force on the circle |r_T| = c A + mu r_N
 // is inside the circumscribed polygon (largest row excess 0 where it
 // touches a facet, below 0 between) and outside the inscribed one except
-// at its vertices, and the cone with its apex at the cut-off carries
-// c A + mu (r_N + sigma_t A). Excesses print in kN to 3 decimals: a facet
-// misplaced by 1 N shows.
+// at its vertices, and the cone shifted by the cut-off carries
+// c A + mu (r_N + sigma_t A) (it passes through (-sigma_t A, c A)). Excesses
+// print in kN to 3 decimals: a facet misplaced by 1 N shows.
 
 #include <mbfem/interface/joint_law.h>
 
@@ -99,7 +99,7 @@ main()
 
   // Polygonal cones at r_N = 200 kN, where the circle's radius is 170 kN;
   // in 3D 8 sides, facet normals at 0, 45, ... degrees, vertices between.
-  const double pi = 3.14159265358979323846, R = 170e3;
+  const double pi = mbfem::JointLaw::pi, R = 170e3;
   const auto   outer = law.polygonal_cone(8, A, false, false, 1.);
   const auto inner = law.polygonal_cone(8, A, false, false, std::cos(pi / 8.));
   for (const double degrees : {0., 22.5, 30.})
@@ -118,11 +118,11 @@ main()
               excess(line, 200e3, R, 0.) / 1e3,
               excess(line, 200e3, -R, 0.) / 1e3,
               excess(line, 200e3, -171e3, 0.) / 1e3);
-  // Apex at the cut-off: at r_N = -25 kN the cone carries 50 kN; broken,
-  // the cone of friction alone from r_N = 0.
+  // Shifted by the cut-off: at r_N = -25 kN the cone carries c A = 50 kN;
+  // broken, the cone of friction alone from r_N = 0.
   const auto cutoff = law.polygonal_cone(2, A, false, true, 1.);
   const auto broken = law.polygonal_cone(2, A, true, true, 1.);
-  std::printf("apex at the cut-off: excess at (-25 kN, 50 kN) %.3f kN; "
+  std::printf("shifted by the cut-off: excess at (-25 kN, 50 kN) %.3f kN; "
               "broken at (0, 0) %.3f kN, (200 kN, 120 kN) %.3f kN\n",
               excess(cutoff, -25e3, 50e3, 0.) / 1e3,
               excess(broken, 0., 0., 0.) / 1e3,

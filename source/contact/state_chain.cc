@@ -467,8 +467,8 @@ namespace mbfem
     set_load_fraction(1.);
     outcome.converged = solved && refused_mechanism().empty();
     if (!outcome.converged)
-      outcome.failure = "Load increment " + std::to_string(increment) +
-                        ": the load continuation did not conclude.";
+      outcome.failure =
+        method_failure(increment, "the load continuation", "did not conclude");
     return outcome;
   }
 
@@ -515,14 +515,38 @@ namespace mbfem
   }
 
 
-  template unsigned int
-  ContactSolver<2>::solve_increment(
-    const std::vector<std::unique_ptr<Block<2>>> &,
-    const unsigned int,
-    const bool);
-  template unsigned int
-  ContactSolver<3>::solve_increment(
-    const std::vector<std::unique_ptr<Block<3>>> &,
-    const unsigned int,
-    const bool);
+  // Every member defined in this file (contact_solver.cc instantiates the
+  // class with the members defined there).
+#define MBFEM_INSTANTIATE(dim)                                                  \
+  template unsigned int ContactSolver<dim>::solve_increment(                    \
+    const std::vector<std::unique_ptr<Block<dim>>> &,                           \
+    const unsigned int,                                                         \
+    const bool);                                                                \
+  template StateMethodOutcome ContactSolver<dim>::run_method(                   \
+    const StateMethod, const unsigned int, const bool, const bool);             \
+  template StateMethodOutcome ContactSolver<dim>::run_load_path(                \
+    const unsigned int);                                                        \
+  template void ContactSolver<dim>::finish_path(const Trial &,                  \
+                                                const unsigned int,             \
+                                                StateMethodOutcome &);          \
+  template void ContactSolver<dim>::set_path_start();                           \
+  template void ContactSolver<dim>::set_load_fraction(const double);            \
+  template StateMethodOutcome ContactSolver<dim>::semismooth_newton(            \
+    const unsigned int);                                                        \
+  template StateMethodOutcome ContactSolver<dim>::lemke(const unsigned int);    \
+  template void               ContactSolver<dim>::settle(const Trial &,         \
+                                           const unsigned int,    \
+                                           StateMethodOutcome &); \
+  template std::string        ContactSolver<dim>::refused_mechanism() const;    \
+  template bool               ContactSolver<dim>::slip_is_elastic() const;      \
+  template StateMethodOutcome ContactSolver<dim>::load_continuation(            \
+    const unsigned int);                                                        \
+  template FastIteration<dim>::Outcome ContactSolver<dim>::fast_iteration(      \
+    const Trial &, const unsigned int, const unsigned int);                     \
+  template void ContactSolver<dim>::accept(const Trial &,                       \
+                                           const Vector<double> &,              \
+                                           const Vector<double> &);
+  MBFEM_INSTANTIATE(2)
+  MBFEM_INSTANTIATE(3)
+#undef MBFEM_INSTANTIATE
 } // namespace mbfem

@@ -20,6 +20,9 @@ namespace mbfem
    */
   struct JointLaw
   {
+    /** pi (this header does without deal.II's numbers::PI, the same value). */
+    static constexpr double pi = 3.14159265358979323846;
+
     double friction_coefficient = 0.;
     double cohesion             = 0.;
     double tensile_strength     = 0.;
@@ -160,47 +163,51 @@ namespace mbfem
 
     /**
      * The facet e . r_T <= kappa (c A + mu r_N) of the cone of a pair of
-     * area @p area, for the unit tangent @p e; with @p apex_at_cutoff its
-     * apex moves from r_N = -c A / mu to the tension cut-off,
-     * kappa (c A + mu (r_N + sigma_t A)), so that the cone contains every
-     * force the law admits, tension included.
+     * area @p area, for the unit tangent @p e. With @p shifted_by_cutoff
+     * the cone is moved by the cut-off sigma_t A along r_N,
+     * kappa (c A + mu (r_N + sigma_t A)): it then passes through
+     * (-sigma_t A, c A) and contains every force the law admits, tension
+     * included (its apex at r_N = -(c A / mu + sigma_t A)).
      */
     ConeFacet
     cone_facet(const std::array<double, 2> &e,
                const double                 area,
                const bool                   broken,
-               const bool                   apex_at_cutoff,
+               const bool                   shifted_by_cutoff,
                const double                 kappa = 1.) const
     {
       const double strength =
         shear_strength(0., area, broken) +
-        (apex_at_cutoff ? friction_coefficient * tensile_limit(area, broken) :
-                          0.);
+        (shifted_by_cutoff ?
+           friction_coefficient * tensile_limit(area, broken) :
+           0.);
       return {-kappa * friction_coefficient, e, kappa * strength};
     }
 
     /**
      * The cone as a polygon of @p n_sides facets for the statics
-     * certificate's linear programs: 2 in 2D (e = +-t), in 3D the unit
-     * tangents at angles 2 pi j / n_sides. kappa = 1 circumscribes the
-     * circle |r_T| = c A + mu r_N, cos(pi / n_sides) inscribes it.
+     * certificate's linear programs: @p n_sides = 2 is the 2D cone
+     * (e = +-t, kappa = 1: exact); from 3 on (3D) the unit tangents at
+     * angles 2 pi j / n_sides, where kappa = 1 circumscribes the circle
+     * |r_T| = c A + mu r_N and cos(pi / n_sides) inscribes it.
      */
     std::vector<ConeFacet>
     polygonal_cone(const unsigned int n_sides,
                    const double       area,
                    const bool         broken,
-                   const bool         apex_at_cutoff,
+                   const bool         shifted_by_cutoff,
                    const double       kappa) const
     {
       std::vector<ConeFacet> facets;
       for (unsigned int j = 0; j < n_sides; ++j)
         {
-          const double angle = 2. * 3.14159265358979323846 * j / n_sides;
+          const double                angle = 2. * pi * j / n_sides;
           const std::array<double, 2> e =
             (n_sides == 2 ?
                std::array<double, 2>{{j == 0 ? 1. : -1., 0.}} :
                std::array<double, 2>{{std::cos(angle), std::sin(angle)}});
-          facets.push_back(cone_facet(e, area, broken, apex_at_cutoff, kappa));
+          facets.push_back(
+            cone_facet(e, area, broken, shifted_by_cutoff, kappa));
         }
       return facets;
     }
