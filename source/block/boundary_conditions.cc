@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <sstream>
 
 namespace mbfem
@@ -157,6 +158,16 @@ namespace mbfem
       prm.enter_subsection("Body force");
       body_force =
         parse_function<dim>(prm, dim, "Boundary conditions/Body force");
+      body_force_is_zero = true;
+      for (const std::string &expression :
+           Utilities::split_string_list(prm.get("Function expression"), ';'))
+        {
+          char        *end   = nullptr;
+          const double value = std::strtod(expression.c_str(), &end);
+          body_force_is_zero = body_force_is_zero &&
+                               end != expression.c_str() && *end == '\0' &&
+                               value == 0.;
+        }
       prm.leave_subsection();
 
       gravity_ramp_time = prm.get_double("Gravity ramp time");

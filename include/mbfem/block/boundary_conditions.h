@@ -63,6 +63,13 @@ namespace mbfem
     std::shared_ptr<Functions::ParsedFunction<dim>> prescribed_displacement;
     std::shared_ptr<Functions::ParsedFunction<dim>> traction;
     std::shared_ptr<Functions::ParsedFunction<dim>> body_force;
+    /**
+     * Whether every expression of 'Body force' is the number 0 (the
+     * default): then the load assembly does not evaluate it at every
+     * quadrature point (muparser's call costs more than the rest of the
+     * point's work).
+     */
+    bool body_force_is_zero = false;
 
     /**
      * Pseudo-time over which the unit weight is ramped ('Gravity ramp
