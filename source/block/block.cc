@@ -601,24 +601,19 @@ namespace mbfem
     Tensor<1, dim> weight;
     weight[dim - 1] =
       -material.unit_weight * boundary_conditions.gravity_factor;
-    const bool zero_body_force = boundary_conditions.body_force_is_zero;
-    const bool no_force        = zero_body_force && weight[dim - 1] == 0.;
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
-        if (!no_force) // else each term would add a zero
+        Tensor<1, dim> b = weight;
+        if (!boundary_conditions.body_force_is_zero)
           {
-            Tensor<1, dim> b = weight;
-            if (!zero_body_force)
-              {
-                boundary_conditions.body_force->vector_value(
-                  fe_values.quadrature_point(q), value);
-                for (unsigned int d = 0; d < dim; ++d)
-                  b[d] += value[d];
-              }
-            for (unsigned int i = 0; i < n; ++i)
-              cell_load(i) +=
-                fe_values[displacement].value(i, q) * b * fe_values.JxW(q);
+            boundary_conditions.body_force->vector_value(
+              fe_values.quadrature_point(q), value);
+            for (unsigned int d = 0; d < dim; ++d)
+              b[d] += value[d];
           }
+        for (unsigned int i = 0; i < n; ++i)
+          cell_load(i) +=
+            fe_values[displacement].value(i, q) * b * fe_values.JxW(q);
         // The initial stress: -int B^T sigma_0, which gravity and the
         // boundaries balance in the geostatic state.
         if (in_situ)
