@@ -964,13 +964,19 @@ namespace mbfem
   {
     const bool condensed =
       !contact || contact->formulation() == ContactFormulation::condensed;
+    // The condensed formulation needs a block's load on its owner alone
+    // (the floating blocks' F_e is shared below); the monolithic system
+    // assembles every block's on every rank.
+    const bool loads_everywhere = !condensed || reference != nullptr;
     {
       TimerOutput::Scope t(timer, "load response");
       Parallel::together(MPI_COMM_WORLD, [&]() {
         for (unsigned int b = 0; b < blocks.size(); ++b)
           {
             Block<dim> &block = *blocks[b];
-            block.assemble_load(parameters.boundary_conditions, time);
+            block.assemble_load(parameters.boundary_conditions,
+                                time,
+                                loads_everywhere);
             if (water)
               water->add_load(b, block, time);
             add_released_forces(b, time); // from the pairs of removed blocks
@@ -982,6 +988,9 @@ namespace mbfem
               }
           }
       });
+      if (Parallel::n_ranks() > 1)
+        for (const auto &block : blocks)
+          block->share_load_resultant();
       if (condensed)
         share_solutions();
     }

@@ -535,12 +535,16 @@ namespace mbfem
   template <int dim>
   void
   Block<dim>::assemble_load(BoundaryConditions<dim> &boundary_conditions,
-                            const double             time)
+                            const double             time,
+                            const bool               on_every_rank)
   {
     boundary_conditions.set_time(time);
     make_constraints(boundary_conditions, floating.pins());
     external_load = 0.;
     physical_load = 0.;
+    load          = 0.;
+    if (!local && !on_every_rank)
+      return; // the owner's work: share_load_resultant() brings F_e
 
     const unsigned int n = fe.n_dofs_per_cell();
     FEValues<dim>      fe_values(mapping,
@@ -931,9 +935,30 @@ namespace mbfem
 
 
   template <int dim>
+  void
+  Block<dim>::share_load_resultant()
+  {
+    shared_load_resultant.assign(floating.modes().size(), 0.);
+    if (local)
+      shared_load_resultant = external_load_resultant();
+    if (!shared_load_resultant.empty())
+      Parallel::broadcast(communicator,
+                          owner,
+                          shared_load_resultant.data(),
+                          shared_load_resultant.size());
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   Block<dim>::external_load_resultant() const
   {
+    if (!local)
+      {
+        AssertDimension(shared_load_resultant.size(), floating.modes().size());
+        return shared_load_resultant;
+      }
     std::vector<double> result(floating.modes().size());
     for (unsigned int a = 0; a < floating.modes().size(); ++a)
       result[a] = floating.modes()[a] * external_load;

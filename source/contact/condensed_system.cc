@@ -382,19 +382,28 @@ namespace mbfem
     const std::vector<unsigned int> &columns) const
   {
     // H_b(., c) = S C s_c: the displacements at the contact DoFs under
-    // the load pattern of row c of S, then S applied to them.
-    std::vector<ContactLoad> loads;
-    for (const unsigned int c : columns)
-      loads.push_back(flexibility.rows[c]);
-    const FullMatrix<double> x      = flexibility.on_demand->columns(loads);
-    const unsigned int       n_rows = flexibility.rows.size();
-    for (unsigned int l = 0; l < columns.size(); ++l)
+    // the load pattern of row c of S, then S applied to them. In batches
+    // of some 4 million entries: the solver's request and answer and x
+    // hold a batch, not every column at once (on the stacked beams of
+    // 6697 pairs, 1395 columns of 20091 entries would be 0.8 GB more).
+    const unsigned int n_rows = flexibility.rows.size();
+    const std::size_t  batch =
+      std::max<std::size_t>(1, (std::size_t(1) << 22) / std::max(1u, n_rows));
+    for (std::size_t first = 0; first < columns.size(); first += batch)
       {
-        std::vector<double> &column = flexibility.columns[columns[l]];
-        column.assign(n_rows, 0.);
-        for (unsigned int r = 0; r < n_rows; ++r)
-          for (const auto &[q, weight] : flexibility.rows[r])
-            column[r] += weight * x(q, l);
+        const std::size_t        end = std::min(columns.size(), first + batch);
+        std::vector<ContactLoad> loads;
+        for (std::size_t l = first; l < end; ++l)
+          loads.push_back(flexibility.rows[columns[l]]);
+        const FullMatrix<double> x = flexibility.on_demand->columns(loads);
+        for (std::size_t l = first; l < end; ++l)
+          {
+            std::vector<double> &column = flexibility.columns[columns[l]];
+            column.assign(n_rows, 0.);
+            for (unsigned int r = 0; r < n_rows; ++r)
+              for (const auto &[q, weight] : flexibility.rows[r])
+                column[r] += weight * x(q, l - first);
+          }
       }
   }
 

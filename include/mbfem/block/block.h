@@ -207,10 +207,16 @@ namespace mbfem
     double
     presence(const double time) const;
 
-    /** Load vector and constraint values at pseudo-time @p time. */
+    /**
+     * Load vector and constraint values at pseudo-time @p time. With
+     * @p on_every_rank false, another rank's block gets its constraints
+     * only (its loads stay zero): the condensed formulation solves with
+     * the load on the owner alone, and share_load_resultant() brings F_e.
+     */
     void
     assemble_load(BoundaryConditions<dim> &boundary_conditions,
-                  const double             time);
+                  const double             time,
+                  const bool               on_every_rank = true);
 
     /**
      * Adds point forces at DoFs (contact forces) to the current load; they
@@ -243,6 +249,14 @@ namespace mbfem
      */
     void
     share_solution();
+
+    /**
+     * The owner's external_load_resultant() on every rank of the block's
+     * communicator, after assemble_load() and the point forces of the
+     * external load on all of them: every rank calls it.
+     */
+    void
+    share_load_resultant();
 
     /**
      * Replaces the solution by @p displacement (n_dofs() values, its
@@ -292,7 +306,8 @@ namespace mbfem
 
     /**
      * Virtual work of the external load of the last assemble_load() in each
-     * floating mode: the paper's F_e. Zero for a held block.
+     * floating mode: the paper's F_e. Zero for a held block. On another
+     * rank's block, the value of the last share_load_resultant().
      */
     std::vector<double>
     external_load_resultant() const;
@@ -529,6 +544,8 @@ namespace mbfem
     Vector<double>               load;
     Vector<double>               external_load;
     Vector<double>               physical_load;
+    /** F_e as share_load_resultant() received it (another rank's block). */
+    std::vector<double> shared_load_resultant;
   };
 } // namespace mbfem
 
