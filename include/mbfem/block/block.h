@@ -117,7 +117,8 @@ namespace mbfem
      * that rank assembles and factorises its stiffness and solves with it;
      * on the others assemble_stiffness(), factorize() and solve() do
      * nothing, and share_solution() brings the owner's displacement. The
-     * mesh, the DoFs, the constraints and the loads are on every rank.
+     * mesh, the DoFs and the constraints are on every rank, the loads
+     * where assemble_load() is asked to put them there.
      * Before setup_system(); without it the block is this process's own.
      */
     void
