@@ -678,13 +678,7 @@ namespace mbfem
     // 0.5 s a call on a beam of 25920 cells).
     if (points.empty())
       return 0.;
-    Point<dim> low = points[0], high = points[0];
-    for (const auto &p : points)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          low[d]  = std::min(low[d], p[d]);
-          high[d] = std::max(high[d], p[d]);
-        }
+    const auto [low, high] = BoundingBox<dim>(points).get_boundary_points();
     std::vector<std::pair<double, unsigned int>> bound(points.size());
     for (unsigned int i = 0; i < points.size(); ++i)
       {
