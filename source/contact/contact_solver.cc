@@ -164,6 +164,7 @@ namespace mbfem
     fast_iterations = 0;
     path_switches   = 0;
     path_broken.clear();
+    last_concluded.reset();
   }
 
 

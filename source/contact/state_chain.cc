@@ -29,17 +29,14 @@ namespace mbfem
     // The methods in their order until one concludes (by default the fast
     // iteration, which concludes nearly every increment in a few solves,
     // then the load path, the semismooth Newton method, Lemke's method and
-    // the load continuation). The verdict where none does: "no equilibrium" if
+    // the load continuation; the last increment's concluding method first
+    // by default). The verdict where none does: "no equilibrium" if
     // a method met one (the last such), else the last failure of the fast
     // iteration or the load path, else the others'.
-    // The monolithic formulation has the fast iteration only: the others
-    // need C_hat and P_hat.
-    const std::vector<StateMethod> methods =
-      monolithic ? std::vector<StateMethod>{StateMethod::fast} :
-                   method_parameters.methods;
-    method          = methods.front();
-    fast_iterations = 0;
-    path_switches   = 0;
+    const std::vector<StateMethod> methods = increment_methods();
+    method                                 = methods.front();
+    fast_iterations                        = 0;
+    path_switches                          = 0;
     path_broken.clear();
     StateMethodOutcome verdict;
     bool               verdict_is_primary = false;
@@ -56,7 +53,8 @@ namespace mbfem
           fast_iterations = outcome.iterations;
         if (outcome.converged)
           {
-            path_switches = (m == StateMethod::fast ? 0 : outcome.iterations);
+            path_switches  = (m == StateMethod::fast ? 0 : outcome.iterations);
+            last_concluded = m;
             // The increment has an equilibrium: nothing for
             // certify_path_breaking() to say, whatever fails after it.
             path_broken.clear();
@@ -92,6 +90,33 @@ namespace mbfem
                 Exceptions::ExcNoEquilibrium(verdict.failure));
     AssertThrow(false, Exceptions::ExcIncrementNotConverged(verdict.failure));
     return 0;
+  }
+
+
+
+  template <int dim>
+  std::vector<StateMethod>
+  ContactSolver<dim>::increment_methods() const
+  {
+    if (monolithic)
+      return {StateMethod::fast};
+    std::vector<StateMethod> methods = method_parameters.methods;
+    // The last increment's concluding method first, the others after it
+    // in their order, where it is one whose work grows with what the
+    // increment changes: the load path (a switch per state change) and
+    // Newton's method (from the last answer). Lemke's method pivots
+    // through the whole problem again (0.5 to 0.8 pivots per variable),
+    // and the continuation is the fast iteration at other loads.
+    if (method_parameters.last_concluded_first && last_concluded &&
+        (*last_concluded == StateMethod::load_path ||
+         *last_concluded == StateMethod::semismooth_newton))
+      {
+        const auto last =
+          std::find(methods.begin(), methods.end(), *last_concluded);
+        if (last != methods.end())
+          std::rotate(methods.begin(), last, last + 1);
+      }
+    return methods;
   }
 
 

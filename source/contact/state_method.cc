@@ -131,6 +131,21 @@ namespace mbfem
       "concluded). 0: never; it ends where it converges, at 'Maximum "
       "iterations', at a singular trial or where it cycles switching one "
       "pair at a time.");
+    prm.declare_entry(
+      "Method order",
+      "last concluded first",
+      Patterns::Selection("as listed|last concluded first"),
+      "as listed: every increment tries the methods of 'State method' in "
+      "their order. last concluded first: where the load path or the "
+      "semismooth Newton method concluded the last increment, the next "
+      "starts with it, the others following in their order, so that a "
+      "model whose increments the fast iteration does not conclude pays "
+      "for its trials once, not at every increment (doc/state_iteration.md; "
+      "Lemke's method and the load continuation are not moved: their work "
+      "does not shrink with the increment's). A run's first increment, a "
+      "stage's and each trial of a strength reduction start as listed. "
+      "Where an increment has more than one solution the order decides "
+      "which is found.");
     prm.enter_subsection("Semismooth Newton");
     {
       prm.declare_entry("Maximum iterations",
@@ -207,6 +222,7 @@ namespace mbfem
   {
     methods               = parse_state_methods(prm.get("State method"));
     fast_stall_iterations = prm.get_integer("Fast iteration stall");
+    last_concluded_first  = (prm.get("Method order") == "last concluded first");
     prm.enter_subsection("Semismooth Newton");
     {
       newton_max_iterations = prm.get_integer("Maximum iterations");

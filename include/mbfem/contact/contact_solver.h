@@ -444,6 +444,15 @@ namespace mbfem
     set_increment_data(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
 
     /**
+     * The methods of this increment in the order tried: 'Contact/State
+     * method', the one that concluded the last increment first where
+     * 'Contact/Method order' says so; the fast iteration alone where the
+     * formulation is monolithic (the others need C_hat and P_hat).
+     */
+    std::vector<StateMethod>
+    increment_methods() const;
+
+    /**
      * Runs @p method on the increment. Where the semismooth Newton method
      * or the load continuation fails, the current states are those before
      * it (which the certificate then reads); the fast iteration and the
@@ -629,6 +638,12 @@ namespace mbfem
     StateMethodParameters method_parameters;
     StateMethod           method          = StateMethod::fast;
     unsigned int          fast_iterations = 0, path_switches = 0;
+    /**
+     * The method that concluded the last increment since the start, the
+     * stage's start or restart() (none before): the first of the next
+     * increment's where 'Contact/Method order' says so.
+     */
+    std::optional<StateMethod> last_concluded;
   };
 } // namespace mbfem
 

@@ -104,6 +104,15 @@ namespace mbfem
      */
     unsigned int fast_stall_iterations = 10;
 
+    /**
+     * Whether an increment starts with the method that concluded the last
+     * one where that is the load path or Newton's method, the others
+     * following in their order ('Contact/Method order'): a model whose
+     * increments the fast iteration does not conclude then pays for its
+     * trials once, not at every increment.
+     */
+    bool last_concluded_first = true;
+
     /** Newton iterations per system before the method gives up. */
     unsigned int newton_max_iterations = 200;
     /**
