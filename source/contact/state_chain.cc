@@ -33,7 +33,7 @@ namespace mbfem
     // by default). The verdict where none does: "no equilibrium" if
     // a method met one (the last such), else the last failure of the fast
     // iteration or the load path, else the others'.
-    const std::vector<StateMethod> methods = increment_methods();
+    const std::vector<StateMethod> methods = increment_methods(from_last_solve);
     method                                 = methods.front();
     fast_iterations                        = 0;
     path_switches                          = 0;
@@ -96,11 +96,16 @@ namespace mbfem
 
   template <int dim>
   std::vector<StateMethod>
-  ContactSolver<dim>::increment_methods() const
+  ContactSolver<dim>::increment_methods(const bool from_last_solve) const
   {
     if (monolithic)
       return {StateMethod::fast};
     std::vector<StateMethod> methods = method_parameters.methods;
+    // A repeated solve of the same increment (a plastic pass) keeps the
+    // listed order: there the fast iteration starts from the last solve's
+    // states, which the load path and Newton's method do not read.
+    if (from_last_solve)
+      return methods;
     // The last increment's concluding method first, the others after it
     // in their order, where it is one whose work grows with what the
     // increment changes: the load path (a switch per state change) and

@@ -100,7 +100,8 @@ namespace mbfem
       "fast, load path, semismooth Newton, Lemke, load continuation",
       Patterns::List(Patterns::Selection(state_method_names()), 1, 5),
       "The methods of each increment's state iteration, tried in this "
-      "order until one concludes (doc/state_iteration.md). fast: assume "
+      "order until one concludes (but see 'Method order'; "
+      "doc/state_iteration.md). fast: assume "
       "states, solve, check, switch every pair that fails its check. "
       "load path: the increment's load applied in a continuous fraction, "
       "one pair switching where its condition fails (condensed only). "
@@ -122,8 +123,8 @@ namespace mbfem
       "Fast iteration stall",
       "10",
       Patterns::Integer(0),
-      "Where another method follows the fast iteration in 'State method', "
-      "the fast iteration gives way to it once the number of pairs that "
+      "Where another method follows the fast iteration in the increment's "
+      "order ('State method', 'Method order'), the fast iteration gives way to it once the number of pairs that "
       "switch state has not fallen to a new low in this many solves "
       "(while it switches every failing pair, before a cycle makes it "
       "switch one at a time): it then wanders, each solve a full one (on "
@@ -143,9 +144,10 @@ namespace mbfem
       "for its trials once, not at every increment (doc/state_iteration.md; "
       "Lemke's method and the load continuation are not moved: their work "
       "does not shrink with the increment's). A run's first increment, a "
-      "stage's and each trial of a strength reduction start as listed. "
-      "Where an increment has more than one solution the order decides "
-      "which is found.");
+      "stage's that changes the contact set-up (an excavation), each "
+      "trial of a strength reduction and each repeated solve of an "
+      "increment for plasticity start as listed. Where an increment has "
+      "more than one solution the order decides which is found.");
     prm.enter_subsection("Semismooth Newton");
     {
       prm.declare_entry("Maximum iterations",

@@ -176,7 +176,8 @@ namespace mbfem
     set_state_methods(const StateMethodParameters &parameters);
 
     /**
-     * With @p on, an increment whose fast iteration and load path fail
+     * With @p on, an increment whose load path fails (after the fast
+     * iteration where that comes first, 'Contact/Method order')
      * asks the statics certificate first, with the joints broken at the
      * start of the increment (breaking only takes strength away): if no
      * admissible forces exist, it ends with ExcNoEquilibrium at once,
@@ -446,11 +447,12 @@ namespace mbfem
     /**
      * The methods of this increment in the order tried: 'Contact/State
      * method', the one that concluded the last increment first where
-     * 'Contact/Method order' says so; the fast iteration alone where the
+     * 'Contact/Method order' says so (not on a repeated solve of the same
+     * increment, @p from_last_solve); the fast iteration alone where the
      * formulation is monolithic (the others need C_hat and P_hat).
      */
     std::vector<StateMethod>
-    increment_methods() const;
+    increment_methods(const bool from_last_solve) const;
 
     /**
      * Runs @p method on the increment. Where the semismooth Newton method
@@ -639,9 +641,11 @@ namespace mbfem
     StateMethod           method          = StateMethod::fast;
     unsigned int          fast_iterations = 0, path_switches = 0;
     /**
-     * The method that concluded the last increment since the start, the
-     * stage's start or restart() (none before): the first of the next
-     * increment's where 'Contact/Method order' says so.
+     * The method that concluded the last increment (or plastic pass) since
+     * this solver was made or restart() (none before): the first of the
+     * next increment's where 'Contact/Method order' says so. A stage that
+     * changes the contact set-up gets a new solver; one that changes loads
+     * only keeps it.
      */
     std::optional<StateMethod> last_concluded;
   };
