@@ -101,9 +101,9 @@ namespace mbfem
     if (monolithic)
       return {StateMethod::fast};
     std::vector<StateMethod> methods = method_parameters.methods;
-    // A repeated solve of the same increment (a plastic pass) keeps the
-    // listed order: there the fast iteration starts from the last solve's
-    // states, which the load path and Newton's method do not read.
+    // A repeated solve whose fast iteration starts from the last solve's
+    // states (the plastic Newton method's later passes) keeps the listed
+    // order: the load path and Newton's method do not read those states.
     if (from_last_solve)
       return methods;
     // The last increment's concluding method first, the others after it

@@ -145,9 +145,10 @@ namespace mbfem
       "Lemke's method and the load continuation are not moved: their work "
       "does not shrink with the increment's). A run's first increment, a "
       "stage's that changes the contact set-up (an excavation), each "
-      "trial of a strength reduction and each repeated solve of an "
-      "increment for plasticity start as listed. Where an increment has "
-      "more than one solution the order decides which is found.");
+      "trial of a strength reduction and the plastic Newton method's passes "
+      "after an increment's first (whose fast iteration starts from the "
+      "last pass's states) start as listed. Where an increment has more "
+      "than one solution the order decides which is found.");
     prm.enter_subsection("Semismooth Newton");
     {
       prm.declare_entry("Maximum iterations",
