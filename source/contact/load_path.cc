@@ -370,6 +370,29 @@ namespace mbfem
 
 
   template <int dim>
+  bool
+  LoadPath<dim>::may_fail(const Trial       &trial,
+                          const Segment     &segment,
+                          const unsigned int k) const
+  {
+    // Every margin of state_margin() is affine in t, or (friction) c A +
+    // mu max(r_N, 0) - |r_T| with r_N and r_T affine: concave wherever r_N
+    // keeps its sign. Their minimum is then concave between 0, the point
+    // where r_N changes sign and 1, and so at least the smaller of its
+    // values there: where none of them fails, no sample can.
+    std::array<double, 3> points{{0., 1., 1.}};
+    const double r_0 = segment.x_a(k * dim), r_1 = segment.x_1(k * dim);
+    if ((r_0 < 0.) != (r_1 < 0.))
+      points[2] = r_0 / (r_0 - r_1);
+    for (const double t : points)
+      if (state_margin(trial, segment, k, t).value < -tolerance)
+        return true;
+    return false;
+  }
+
+
+
+  template <int dim>
   typename LoadPath<dim>::Event
   LoadPath<dim>::first_event(const Trial &trial, const Segment &segment) const
   {
@@ -381,6 +404,8 @@ namespace mbfem
     for (unsigned int k = 0; k < pairs.size(); ++k)
       {
         if (pairs[k].tied || checks.all_held(k))
+          continue;
+        if (!may_fail(trial, segment, k))
           continue;
         // The first sample where the margin fails, then bisection to where
         // it crosses zero.

@@ -26,6 +26,7 @@ namespace mbfem
   {
     const unsigned int n = rows.size();
     z.clear();
+    z_norm.clear();
     base_solutions.clear();
     forget_change();
     is_factorized = false;
@@ -122,6 +123,13 @@ namespace mbfem
   {
     Assert(is_factorized, ExcMessage("UpdatedLU: nothing factorised."));
     AssertDimension(indices.size(), rows.size());
+    // The last change, whose entries of S the new one reuses.
+    std::vector<unsigned int> last_changed;
+    std::vector<Row>          last_difference;
+    FullMatrix<double>        last_entries;
+    last_changed.swap(changed);
+    last_difference.swap(difference);
+    last_entries.swap(capacitance_entries);
     forget_change();
     const unsigned int m = indices.size();
     if (m == 0)
@@ -167,7 +175,10 @@ namespace mbfem
         for (auto column = z.begin(); column != z.end();)
           if (std::find(changed.begin(), changed.end(), column->first) ==
               changed.end())
-            column = z.erase(column);
+            {
+              z_norm.erase(column->first);
+              column = z.erase(column);
+            }
           else
             ++column;
       }
@@ -181,21 +192,12 @@ namespace mbfem
           Vector<double> column(size());
           column(i) = 1.;
           substitute(column, false);
+          z_norm[i] = column.l1_norm();
           z.emplace(i, std::move(column));
           ++n_columns;
         }
 
-    // S = I + D Z.
-    capacitance.reinit(m, m);
-    for (unsigned int a = 0; a < m; ++a)
-      for (unsigned int b = 0; b < m; ++b)
-        {
-          const Vector<double> &column = z.at(changed[b]);
-          double                value  = (a == b) ? 1. : 0.;
-          for (const auto &[j, d] : difference[a])
-            value += d * column(j);
-          capacitance(a, b) = value;
-        }
+    assemble_capacitance(last_changed, last_difference, last_entries);
     try
       {
         capacitance.compute_lu_factorization();
@@ -212,7 +214,7 @@ namespace mbfem
       });
     z_l1_norm = 0.;
     for (const unsigned int i : changed)
-      z_l1_norm = std::max(z_l1_norm, z.at(i).l1_norm());
+      z_l1_norm = std::max(z_l1_norm, z_norm.at(i));
     std::map<unsigned int, double> column_sum;
     for (const Row &d : difference)
       for (const auto &[j, value] : d)
@@ -236,12 +238,58 @@ namespace mbfem
 
 
   void
+  UpdatedLU::assemble_capacitance(const std::vector<unsigned int> &last_changed,
+                                  const std::vector<Row>   &last_difference,
+                                  const FullMatrix<double> &last_entries)
+  {
+    // S_ab = delta_ab + d_a . z_(i_b) depends on row i_a's difference and
+    // on Z's column i_b only, and Z's columns stay until the next
+    // factorisation: an entry whose row changed as before, against a
+    // column of the last change, is the last change's. The load path
+    // changes one pair more per call, so only S's new rows and columns
+    // cost dot products, not all m^2 of them.
+    const unsigned int        m = changed.size();
+    std::vector<unsigned int> last_position(m, numbers::invalid_unsigned_int);
+    std::vector<bool>         same_row(m, false);
+    for (unsigned int a = 0; a < m; ++a)
+      {
+        const auto p =
+          std::find(last_changed.begin(), last_changed.end(), changed[a]);
+        if (p == last_changed.end())
+          continue;
+        last_position[a] = p - last_changed.begin();
+        same_row[a]      = last_difference[last_position[a]] == difference[a];
+      }
+    capacitance_entries.reinit(m, m);
+    for (unsigned int a = 0; a < m; ++a)
+      for (unsigned int b = 0; b < m; ++b)
+        {
+          double value;
+          if (same_row[a] && last_position[b] != numbers::invalid_unsigned_int)
+            value = last_entries(last_position[a], last_position[b]);
+          else
+            {
+              const Vector<double> &column = z.at(changed[b]);
+              value                        = (a == b) ? 1. : 0.;
+              for (const auto &[j, d] : difference[a])
+                value += d * column(j);
+            }
+          capacitance_entries(a, b) = value;
+        }
+    capacitance.reinit(m, m);
+    capacitance = capacitance_entries;
+  }
+
+
+
+  void
   UpdatedLU::forget_change()
   {
     changed.clear();
     difference.clear();
     changed_row_norm.clear();
     capacitance.reinit(0, 0);
+    capacitance_entries.reinit(0, 0);
     change_l1_norm = z_l1_norm = capacitance_inverse_l1_norm = 0.;
   }
 

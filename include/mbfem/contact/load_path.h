@@ -117,6 +117,16 @@ namespace mbfem
                  const unsigned int k,
                  const double       t) const;
 
+    /**
+     * Whether pair @p k's margin can fail on @p segment: false where it
+     * holds at the points between which it is concave (most pairs of a
+     * segment), so first_event() samples only the others.
+     */
+    bool
+    may_fail(const Trial       &trial,
+             const Segment     &segment,
+             const unsigned int k) const;
+
     Event
     first_event(const Trial &trial, const Segment &segment) const;
 

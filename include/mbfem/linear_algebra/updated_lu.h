@@ -3,6 +3,7 @@
 
 #include <mbfem/linear_algebra/sparse_lu.h>
 
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -150,6 +151,16 @@ namespace mbfem
     bool
     recall_base_solution(Vector<double> &x) const;
 
+    /**
+     * S = I + D Z of the present change, from @p last_entries (S of the
+     * change @p last_changed with differences @p last_difference) where
+     * they still hold.
+     */
+    void
+    assemble_capacitance(const std::vector<unsigned int> &last_changed,
+                         const std::vector<Row>          &last_difference,
+                         const FullMatrix<double>        &last_entries);
+
     /** Back to A = A_0: no rows replaced (Z's columns are kept). */
     void
     forget_change();
@@ -180,12 +191,16 @@ namespace mbfem
     double   base_norm     = 0.;
     /** A_0^{-1} e_i for the rows changed since the factorisation. */
     std::map<unsigned int, Vector<double>> z;
+    /** The 1-norms of Z's columns, for condition_bound(). */
+    std::map<unsigned int, double> z_norm;
     /** The change: rows i_a, their differences d_a, and S's LU. */
     std::vector<unsigned int> changed;
     std::vector<Row>          difference;
     std::vector<double>       changed_row_norm; // |new row|_1
     LAPACKFullMatrix<double>  capacitance;
-    unsigned int              n_factorizations = 0, n_columns = 0;
+    /** S's entries (capacitance holds its LU). */
+    FullMatrix<double> capacitance_entries;
+    unsigned int       n_factorizations = 0, n_columns = 0;
     /** (b_0, A_0^{-1} b_0), the most recent first, since the factorisation. */
     mutable std::vector<std::pair<Vector<double>, Vector<double>>>
                          base_solutions;
