@@ -380,14 +380,13 @@ namespace mbfem
     // keeps its sign. Their minimum is then concave between 0, the point
     // where r_N changes sign and 1, and so at least the smaller of its
     // values there: where none of them fails, no sample can.
-    std::array<double, 3> points{{0., 1., 1.}};
+    const auto fails_at = [&](const double t) {
+      return state_margin(trial, segment, k, t).value < -tolerance;
+    };
+    if (fails_at(0.) || fails_at(1.))
+      return true;
     const double r_0 = segment.x_a(k * dim), r_1 = segment.x_1(k * dim);
-    if ((r_0 < 0.) != (r_1 < 0.))
-      points[2] = r_0 / (r_0 - r_1);
-    for (const double t : points)
-      if (state_margin(trial, segment, k, t).value < -tolerance)
-        return true;
-    return false;
+    return (r_0 < 0.) != (r_1 < 0.) && fails_at(r_0 / (r_0 - r_1));
   }
 
 
