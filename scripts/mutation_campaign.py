@@ -65,6 +65,7 @@ import signal
 import struct
 import subprocess
 import sys
+import tempfile
 import time
 import zlib
 from concurrent.futures import ThreadPoolExecutor
@@ -686,14 +687,20 @@ def snapshot(mbfem, work):
     return copy, environment
 
 
-def start_process(args, folder, plan, out, err):
-    """Popen, retried while the binary is busy or missing for a moment."""
+def start_process(args, folder, plan, out, err, session_base):
+    """Popen, retried while the binary is busy or missing for a moment.
+    Open MPI's session directory goes under 'session_base': singletons
+    started at the same time under one user otherwise share
+    /tmp/ompi.HOST.UID/jf.0, which the one that ends first may remove
+    while another creates its own in it (it then fails to start)."""
+    environment = dict(args.environment,
+                       OMPI_MCA_orte_tmpdir_base=session_base)
     for attempt in range(10):
         try:
             return subprocess.Popen([args.mbfem, plan.case.input_name()],
                                     cwd=folder, stdout=out, stderr=err,
                                     stdin=subprocess.DEVNULL,
-                                    env=args.environment,
+                                    env=environment,
                                     start_new_session=True)
         except OSError:
             if attempt == 9:
@@ -705,9 +712,20 @@ def execute(args, folder, plan, memory_limit):
     """Runs mbfem in 'folder'; fills a Result (no verdict yet)."""
     result = Result()
     start = time.time()
+    session_base = tempfile.mkdtemp(prefix="mbfem-ompi-")
+    try:
+        return run_and_read(args, folder, plan, memory_limit, result, start,
+                            session_base)
+    finally:
+        shutil.rmtree(session_base, ignore_errors=True)
+
+
+def run_and_read(args, folder, plan, memory_limit, result, start,
+                 session_base):
+    """execute()'s run, its wait and what it left."""
     with open(os.path.join(folder, "stdout.txt"), "w") as out, \
             open(os.path.join(folder, "stderr.txt"), "w") as err:
-        proc = start_process(args, folder, plan, out, err)
+        proc = start_process(args, folder, plan, out, err, session_base)
         limit_memory(proc.pid, memory_limit)
         try:
             if plan.fault:
