@@ -534,18 +534,61 @@ namespace mbfem
     const IncrementLoads                 &loads,
     Vector<double>                       &solution)
   {
-    const unsigned int n_r = n_pairs * dim;
-    // Unknowns: rho * scale (a displacement) and alpha, so that all entries
-    // are of unit order whatever the units of the model; the singularity
-    // test below then means the same for a rubber and a rock model. A row
-    // with force terms is multiplied by scale.
-    const double scale = flexibility_scale;
+    const unsigned int        n_r = n_pairs * dim;
+    std::vector<double>       key;
+    std::vector<unsigned int> unknowns;
+    set_unknowns(equations, key, unknowns);
+    const unsigned int n_rho = unknowns.size();
+    if (n_rho + coupling.n_modes() == 0)
+      {
+        // Every pair open and no floating block: all forces are zero (LAPACK
+        // refuses a 0 x 0 factorisation).
+        solution.reinit(n_r);
+        return true;
+      }
 
+    // The key decides the unknowns and so whether the system is sparse
+    // (then over every pair direction and floating mode).
+    Factorisation &system = factorisation;
+    if (system.coefficients != key)
+      set_system(equations, key, unknowns);
+    if (!system.regular)
+      return false;
+
+    Vector<double> rhs = right_hand_side(equations, loads);
+    if (system.dense)
+      system.matrix.solve(rhs);
+    else if (!solve_sparse(equations, system, rhs))
+      return false;
+
+    // Where unknown i and floating mode a are in the system.
+    const auto index = [&](const unsigned int i) {
+      return system.dense ? i : unknowns[i];
+    };
+    const unsigned int first_mode = system.dense ? n_rho : n_r;
+    solution.reinit(n_r + coupling.n_modes());
+    for (unsigned int i = 0; i < n_rho; ++i)
+      solution(unknowns[i]) = rhs(index(i)) / flexibility_scale;
+    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
+      solution(n_r + a) = rhs(first_mode + a);
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::set_unknowns(
+    const std::vector<PairEquation<dim>> &equations,
+    std::vector<double>                  &key,
+    std::vector<unsigned int>            &unknowns) const
+  {
     // A row that says rho_i = 0 (open pairs, held directions) removes its
     // unknown: only the directions of the other pairs and the floating
     // modes remain, some 250 of 4131 unknowns on the 1377-pair model.
-    std::vector<double>       key;
-    std::vector<unsigned int> unknowns;
+    const unsigned int n_r = n_pairs * dim;
+    key.clear();
+    unknowns.clear();
     key.reserve(n_r * (2 * dim + 1));
     for (unsigned int row = 0; row < n_r; ++row)
       {
@@ -562,70 +605,66 @@ namespace mbfem
         if (!zero)
           unknowns.push_back(row);
       }
-    const unsigned int n_rho = unknowns.size();
-    const unsigned int n     = n_rho + coupling.n_modes();
-    if (n == 0)
-      {
-        // Every pair open and no floating block: all forces are zero (LAPACK
-        // refuses a 0 x 0 factorisation).
-        solution.reinit(n_r);
-        return true;
-      }
+  }
 
-    // The key decides the unknowns and so whether the system is sparse
-    // (then over every pair direction and floating mode).
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::set_system(
+    const std::vector<PairEquation<dim>> &equations,
+    const std::vector<double>            &key,
+    const std::vector<unsigned int>      &unknowns)
+  {
+    // No key until the columns are there: a throw in request_columns()
+    // must not leave the old factors under the new key.
     Factorisation &system = factorisation;
-    if (system.coefficients != key)
-      {
-        // No key until the columns are there: a throw in request_columns()
-        // must not leave the old factors under the new key.
-        system.coefficients.clear();
-        system.regular = false;
-        system.dense   = !use_sparse(unknowns);
-        request_columns(system.dense ? unknowns : sparse_columns(unknowns));
-        system.coefficients = key;
-        system.unknowns     = unknowns;
-        if (system.dense)
-          assemble(equations, system);
-        else
-          assemble_sparse(equations, system);
-      }
-    const bool dense = system.dense;
-    if (!system.regular)
-      return false;
+    system.coefficients.clear();
+    system.regular = false;
+    system.dense   = !use_sparse(unknowns);
+    request_columns(system.dense ? unknowns : sparse_columns(unknowns));
+    system.coefficients = key;
+    system.unknowns     = unknowns;
+    if (system.dense)
+      assemble(equations, system);
+    else
+      assemble_sparse(equations, system);
+  }
 
-    // Where unknown i and floating mode a are in the system.
-    const auto index = [&](const unsigned int i) {
-      return dense ? i : unknowns[i];
-    };
-    const auto mode_index = [&](const unsigned int a) {
-      return (dense ? n_rho : n_r) + a;
-    };
-    Vector<double> rhs(system.size);
+
+
+  template <int dim>
+  Vector<double>
+  CondensedSystem<dim>::right_hand_side(
+    const std::vector<PairEquation<dim>> &equations,
+    const IncrementLoads                 &loads) const
+  {
+    // Unknowns: rho * scale (a displacement) and alpha, so that all entries
+    // are of unit order whatever the units of the model; the singularity
+    // test then means the same for a rubber and a rock model. A row with
+    // force terms is multiplied by scale.
+    const Factorisation &system = factorisation;
+    const unsigned int   n_r    = n_pairs * dim;
+    const unsigned int   n_rho  = system.unknowns.size();
+    const double         scale  = flexibility_scale;
+    Vector<double>       rhs(system.size);
     for (unsigned int i = 0; i < n_rho; ++i)
       {
-        const unsigned int       row   = unknowns[i];
+        const unsigned int       row   = system.unknowns[i];
         const PairEquation<dim> &eq    = equations[row];
         double                   value = eq.value;
         for (unsigned int e = 0; e < dim; ++e)
           value -= eq.displacement_coefficients[e] *
                    loads.displacement((row / dim) * dim + e);
-        rhs(index(i)) = (eq.has_force_terms() ? scale : 1.) * value;
+        rhs(system.dense ? i : row) =
+          (eq.has_force_terms() ? scale : 1.) * value;
       }
+    const unsigned int first_mode = system.dense ? n_rho : n_r;
     for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-      rhs(mode_index(a)) = -loads.resultant[a] * scale;
-    if (dense)
-      system.matrix.solve(rhs);
-    else if (!solve_sparse(equations, system, rhs))
-      return false;
-
-    solution.reinit(n_r + coupling.n_modes());
-    for (unsigned int i = 0; i < n_rho; ++i)
-      solution(unknowns[i]) = rhs(index(i)) / scale;
-    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-      solution(n_r + a) = rhs(mode_index(a));
-    return true;
+      rhs(first_mode + a) = -loads.resultant[a] * scale;
+    return rhs;
   }
+
 
 
   template <int dim>

@@ -23,38 +23,39 @@ namespace mbfem
 
 
   template <int dim>
+  struct FastIteration<dim>::Progress
+  {
+    /** Switching one pair at a time (after a cycle or a lost support). */
+    bool                  damped = false;
+    std::set<std::string> seen;
+    /** The last trial that solved, the states and violations its check gave. */
+    bool                have_good = false;
+    Trial               last_good, last_good_next;
+    std::vector<double> last_good_violation;
+    /** The fewest pairs switching so far, and when (undamped). */
+    unsigned int fewest_switching = numbers::invalid_unsigned_int;
+    unsigned int fewest_at        = 0;
+  };
+
+
+
+  template <int dim>
   typename FastIteration<dim>::Outcome
   FastIteration<dim>::run(Trial              trial,
                           const Solve       &solve,
                           const std::string &head) const
   {
-    Outcome               outcome;
-    bool                  damped = false;
-    std::set<std::string> seen{checks.signature(trial)};
-    Trial                 last_good, last_good_next;
-    std::vector<double>   last_good_violation;
-    bool                  have_good = false;
-    // The fewest pairs switching so far, and when (undamped).
-    unsigned int fewest_switching = numbers::invalid_unsigned_int;
-    unsigned int fewest_at        = 0;
-
+    Outcome  outcome;
+    Progress progress;
+    progress.seen.insert(checks.signature(trial));
     for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
       {
         outcome.iterations = iteration;
         Vector<double> solution, displacement;
         if (!solve(trial, solution, displacement))
           {
-            if (!damped && have_good)
-              {
-                // Too many switches at once can lose a block's support;
-                // go back and switch one pair at a time.
-                damped = true;
-                seen.clear();
-                trial =
-                  single_change(last_good, last_good_next, last_good_violation);
-                seen.insert(checks.signature(trial));
-                continue;
-              }
+            if (damp_after_singular(progress, trial))
+              continue;
             outcome.no_equilibrium = true;
             outcome.failure =
               head + ": no equilibrium." + mechanisms.diagnose_singular(trial);
@@ -65,7 +66,6 @@ namespace mbfem
         double              direction_change;
         Trial               next = checks.check(
           trial, solution, displacement, violation, direction_change);
-
         if (checks.signature(next) == checks.signature(trial) &&
             direction_change < 1e-6)
           {
@@ -80,45 +80,16 @@ namespace mbfem
             outcome.converged             = true;
             return outcome;
           }
-        have_good           = true;
-        last_good           = trial;
-        last_good_next      = next;
-        last_good_violation = violation;
+        progress.have_good           = true;
+        progress.last_good           = trial;
+        progress.last_good_next      = next;
+        progress.last_good_violation = violation;
 
-        if (damped && checks.signature(next) != checks.signature(trial))
-          next = single_change(trial, next, violation);
-        if (checks.signature(next) != checks.signature(trial) &&
-            seen.count(checks.signature(next)) == 1)
-          {
-            if (!damped)
-              {
-                damped = true;
-                seen.clear();
-                next = single_change(trial, next, violation);
-              }
-            else
-              {
-                outcome.failure = describe_cycle(head, iteration, trial, next);
-                return outcome;
-              }
-          }
-        // Undamped still (no cycle): has it stalled?
-        if (!damped && stall_iterations > 0)
-          {
-            const unsigned int switching = n_switching(trial, next);
-            // Only the 3D slip directions moving counts as progress.
-            if (switching < fewest_switching || switching == 0)
-              {
-                fewest_switching = switching;
-                fewest_at        = iteration;
-              }
-            else if (iteration - fewest_at >= stall_iterations)
-              {
-                outcome.failure = describe_stall(head, iteration, switching);
-                return outcome;
-              }
-          }
-        seen.insert(checks.signature(next));
+        outcome.failure =
+          choose_next(progress, trial, next, violation, iteration, head);
+        if (!outcome.failure.empty())
+          return outcome;
+        progress.seen.insert(checks.signature(next));
         trial = next;
       }
     outcome.failure = head + ": the contact states did not settle in " +
@@ -127,6 +98,64 @@ namespace mbfem
                       "load increments.";
     return outcome;
   }
+
+
+  template <int dim>
+  bool
+  FastIteration<dim>::damp_after_singular(Progress &progress,
+                                          Trial    &trial) const
+  {
+    // Too many switches at once can lose a block's support; go back and
+    // switch one pair at a time.
+    if (progress.damped || !progress.have_good)
+      return false;
+    progress.damped = true;
+    progress.seen.clear();
+    trial = single_change(progress.last_good,
+                          progress.last_good_next,
+                          progress.last_good_violation);
+    progress.seen.insert(checks.signature(trial));
+    return true;
+  }
+
+
+
+  template <int dim>
+  std::string
+  FastIteration<dim>::choose_next(Progress                  &progress,
+                                  const Trial               &trial,
+                                  Trial                     &next,
+                                  const std::vector<double> &violation,
+                                  const unsigned int         iteration,
+                                  const std::string         &head) const
+  {
+    if (progress.damped && checks.signature(next) != checks.signature(trial))
+      next = single_change(trial, next, violation);
+    if (checks.signature(next) != checks.signature(trial) &&
+        progress.seen.count(checks.signature(next)) == 1)
+      {
+        if (progress.damped)
+          return describe_cycle(head, iteration, trial, next);
+        progress.damped = true;
+        progress.seen.clear();
+        next = single_change(trial, next, violation);
+      }
+    // Undamped still (no cycle): has it stalled?
+    if (!progress.damped && stall_iterations > 0)
+      {
+        const unsigned int switching = n_switching(trial, next);
+        // Only the 3D slip directions moving counts as progress.
+        if (switching < progress.fewest_switching || switching == 0)
+          {
+            progress.fewest_switching = switching;
+            progress.fewest_at        = iteration;
+          }
+        else if (iteration - progress.fewest_at >= stall_iterations)
+          return describe_stall(head, iteration, switching);
+      }
+    return {};
+  }
+
 
 
   template <int dim>

@@ -73,6 +73,14 @@ namespace mbfem
           d[i]                 = d_a(j) + t * (d_1(j) - d_a(j));
         }
     }
+
+    /** d_N of pair @p k at t, as at() gives it. */
+    double
+    normal_displacement(const unsigned int k, const double t) const
+    {
+      const unsigned int j = k * dim;
+      return d_a(j) + t * (d_1(j) - d_a(j));
+    }
   };
 
 
@@ -155,11 +163,8 @@ namespace mbfem
           seen_here.clear();
         s = s_event;
         for (unsigned int k = 0; k < pairs.size(); ++k)
-          {
-            Tensor<1, dim> rho, d;
-            segment.at(k, event.t, rho, d);
-            gap[k] = pairs[k].initial_gap + d[0];
-          }
+          gap[k] =
+            pairs[k].initial_gap + segment.normal_displacement(k, event.t);
         switch_state(trial, segment, event);
         ++switches;
         // At one load the path may also wander without repeating a state:
@@ -169,19 +174,7 @@ namespace mbfem
         if (!seen_here.insert(checks.signature(trial)).second ||
             seen_here.size() > max_switches_at_one_load ||
             switches > max_switches)
-          {
-            Outcome cycle;
-            cycle.iterations = switches;
-            cycle.states     = trial;
-            cycle.s          = s;
-            cycle.failure    = head +
-                            ": the load path cannot continue: the states of "
-                            "pair " +
-                            std::to_string(event.pair) +
-                            " and its neighbours cycle at one load" +
-                            how_far(s, switches) + ".";
-            return cycle;
-          }
+          return cycle_end(trial, head, event.pair, s, switches);
       }
     Outcome end;
     end.reached_end = true;
@@ -642,6 +635,29 @@ namespace mbfem
       trial.state[first] = ContactState::stick;
     trial.tensile_slip[first] = false;
     return true;
+  }
+
+
+
+  template <int dim>
+  typename LoadPath<dim>::Outcome
+  LoadPath<dim>::cycle_end(const Trial       &trial,
+                           const std::string &head,
+                           const unsigned int pair,
+                           const double       s,
+                           const unsigned int switches) const
+  {
+    Outcome cycle;
+    cycle.iterations = switches;
+    cycle.states     = trial;
+    cycle.s          = s;
+    cycle.failure    = head +
+                    ": the load path cannot continue: the states of "
+                    "pair " +
+                    std::to_string(pair) +
+                    " and its neighbours cycle at one load" +
+                    how_far(s, switches) + ".";
+    return cycle;
   }
 
 

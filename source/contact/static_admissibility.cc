@@ -138,6 +138,65 @@ namespace mbfem
       return first;
     }
 
+    /**
+     * A pair with coupling rows @p first_row ... + dim - 1 that slides
+     * along a mechanism with the unit slip @p slip (tangential
+     * components): normal force N >= -@p tension, shear tau >= 0 against
+     * the slip, at most the strength of @p law's facet against it (c A +
+     * mu (N + sigma_t A), circumscribed), and in 3D a shear tau_perp across
+     * the slip within |tau_perp| <= @p fan tau.
+     */
+    template <int dim>
+    void
+    add_sliding_pair(LinearProgram            &lp,
+                     const FullMatrix<double> &coupling,
+                     const unsigned int        first_row,
+                     const JointLaw           &law,
+                     const double              area,
+                     const bool                broken,
+                     const double              tension,
+                     const Tensor<1, dim>     &slip,
+                     const double              fan)
+    {
+      const double       inf    = COIN_DBL_MAX;
+      const unsigned int normal = lp.add_column(-tension, inf, 0.);
+      const unsigned int shear  = lp.add_column(0., inf, 0.);
+      for (unsigned int a = 0; a < coupling.n(); ++a)
+        {
+          lp.add(a, normal, coupling(first_row, a));
+          double along = 0.;
+          for (unsigned int d = 1; d < dim; ++d)
+            along -= coupling(first_row + d, a) * slip[d];
+          lp.add(a, shear, along);
+        }
+      // The facet against the slip: tau <= c A + mu (N + sigma_t A).
+      const JointLaw::ConeFacet facet =
+        law.cone_facet({{1., 0.}}, area, broken, true);
+      const unsigned int strength = lp.add_row(-inf, facet.bound);
+      lp.add(strength, shear, facet.tangent[0]);
+      lp.add(strength, normal, facet.normal);
+      if (dim == 3)
+        {
+          Tensor<1, dim> across;
+          across[1]               = -slip[2];
+          across[2]               = slip[1];
+          const unsigned int turn = lp.add_column(-inf, inf, 0.);
+          for (unsigned int a = 0; a < coupling.n(); ++a)
+            {
+              double value = 0.;
+              for (unsigned int d = 1; d < dim; ++d)
+                value += coupling(first_row + d, a) * across[d];
+              lp.add(a, turn, value);
+            }
+          for (const double sign : {1., -1.})
+            {
+              const unsigned int row = lp.add_row(-inf, 0.);
+              lp.add(row, turn, sign);
+              lp.add(row, shear, -fan);
+            }
+        }
+    }
+
     /** Loads @p lp into @p model and solves it; throws unless optimal. */
     void
     solve_phase_one(const LinearProgram &lp, ClpSimplex &model)
@@ -445,8 +504,6 @@ namespace mbfem
     const std::vector<double> &mechanism,
     const unsigned int         freedom) const
   {
-    const unsigned int        n_modes = coupling.n();
-    const double              inf     = COIN_DBL_MAX;
     const std::vector<double> w       = pair_velocities(mechanism);
     double                    largest = 0.;
     for (const double x : w)
@@ -499,50 +556,11 @@ namespace mbfem
                                                       1.));
             continue;
           }
-        // Sliding: normal force N, shear tau against the slip s, at most
-        // the strength (c A + mu (N + sigma_t A), circumscribed), and in
-        // 3D a shear tau_perp across s within the fan.
-        Tensor<1, dim> s, across;
+        Tensor<1, dim> s;
         for (unsigned int d = 1; d < dim; ++d)
           s[d] = w[k * dim + d] / slip;
-        if (dim == 3)
-          {
-            across[1] = -s[2];
-            across[2] = s[1];
-          }
-        const unsigned int normal = lp.add_column(-tension, inf, 0.);
-        const unsigned int shear  = lp.add_column(0., inf, 0.);
-        for (unsigned int a = 0; a < n_modes; ++a)
-          {
-            lp.add(a, normal, coupling(k * dim, a));
-            double along = 0.;
-            for (unsigned int d = 1; d < dim; ++d)
-              along -= coupling(k * dim + d, a) * s[d];
-            lp.add(a, shear, along);
-          }
-        // The facet against the slip: tau <= c A + mu (N + sigma_t A).
-        const JointLaw::ConeFacet facet =
-          law.cone_facet({{1., 0.}}, area, pair.broken, true);
-        const unsigned int strength = lp.add_row(-inf, facet.bound);
-        lp.add(strength, shear, facet.tangent[0]);
-        lp.add(strength, normal, facet.normal);
-        if (dim == 3)
-          {
-            const unsigned int turn = lp.add_column(-inf, inf, 0.);
-            for (unsigned int a = 0; a < n_modes; ++a)
-              {
-                double value = 0.;
-                for (unsigned int d = 1; d < dim; ++d)
-                  value += coupling(k * dim + d, a) * across[d];
-                lp.add(a, turn, value);
-              }
-            for (const double sign : {1., -1.})
-              {
-                const unsigned int row = lp.add_row(-inf, 0.);
-                lp.add(row, turn, sign);
-                lp.add(row, shear, -fan);
-              }
-          }
+        add_sliding_pair<dim>(
+          lp, coupling, k * dim, law, area, pair.broken, tension, s, fan);
       }
     ClpSimplex model;
     solve_phase_one(lp, model);

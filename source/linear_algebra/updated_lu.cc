@@ -137,65 +137,10 @@ namespace mbfem
     if (m > max_rank())
       return false;
 
-    // d_a = new row - old row, merged over the two sorted rows.
     for (unsigned int a = 0; a < m; ++a)
-      {
-        const unsigned int i = indices[a];
-        Row                old;
-        for (auto entry = base.begin(i); entry != base.end(i); ++entry)
-          if (entry->value() != 0.)
-            old.emplace_back(entry->column(), entry->value());
-        std::sort(old.begin(), old.end());
-        Row    d;
-        double norm = 0.;
-        auto   p    = old.begin();
-        for (const auto &[j, value] : rows[a])
-          {
-            for (; p != old.end() && p->first < j; ++p)
-              d.emplace_back(p->first, -p->second);
-            double v = value;
-            if (p != old.end() && p->first == j)
-              v -= (p++)->second;
-            if (v != 0.)
-              d.emplace_back(j, v);
-            norm += std::abs(value);
-          }
-        for (; p != old.end(); ++p)
-          d.emplace_back(p->first, -p->second);
-        changed.push_back(i);
-        difference.push_back(std::move(d));
-        changed_row_norm.push_back(norm);
-      }
-
-    // Z's columns of rows no longer changed are dropped once there are
-    // twice as many as a change may have, so that Z holds at most 3
-    // max_rank() columns.
-    if (z.size() > 2 * max_rank())
-      {
-        for (auto column = z.begin(); column != z.end();)
-          if (std::find(changed.begin(), changed.end(), column->first) ==
-              changed.end())
-            {
-              z_norm.erase(column->first);
-              column = z.erase(column);
-            }
-          else
-            ++column;
-      }
-
-    // Z's columns not yet computed: one unrefined substitution each (its
-    // errors are those of A_0's factors, which the refinement in solve()
-    // corrects).
-    for (const unsigned int i : changed)
-      if (z.find(i) == z.end())
-        {
-          Vector<double> column(size());
-          column(i) = 1.;
-          substitute(column, false);
-          z_norm[i] = column.l1_norm();
-          z.emplace(i, std::move(column));
-          ++n_columns;
-        }
+      add_difference(indices[a], rows[a]);
+    drop_unused_columns();
+    compute_missing_columns();
 
     assemble_capacitance(last_changed, last_difference, last_entries);
     try
@@ -207,9 +152,98 @@ namespace mbfem
         forget_change();
         return false;
       }
-    // The norms of condition_bound().
+    set_change_norms();
+
+    // A nearly singular S (S is I where nothing changed, so its inverse's
+    // norm alone says how close A is to singular relative to A_0), or an A
+    // that may be near its caller's limit of regular systems: refused, the
+    // caller's own LU decides.
+    if (!(capacitance_inverse_l1_norm < 1e10 && condition_bound() < 1e12))
+      {
+        forget_change();
+        return false;
+      }
+    return true;
+  }
+
+
+
+  void
+  UpdatedLU::add_difference(const unsigned int i, const Row &row)
+  {
+    // d = new row - old row, merged over the two sorted rows.
+    Row old;
+    for (auto entry = base.begin(i); entry != base.end(i); ++entry)
+      if (entry->value() != 0.)
+        old.emplace_back(entry->column(), entry->value());
+    std::sort(old.begin(), old.end());
+    Row    d;
+    double norm = 0.;
+    auto   p    = old.begin();
+    for (const auto &[j, value] : row)
+      {
+        for (; p != old.end() && p->first < j; ++p)
+          d.emplace_back(p->first, -p->second);
+        double v = value;
+        if (p != old.end() && p->first == j)
+          v -= (p++)->second;
+        if (v != 0.)
+          d.emplace_back(j, v);
+        norm += std::abs(value);
+      }
+    for (; p != old.end(); ++p)
+      d.emplace_back(p->first, -p->second);
+    changed.push_back(i);
+    difference.push_back(std::move(d));
+    changed_row_norm.push_back(norm);
+  }
+
+
+
+  void
+  UpdatedLU::drop_unused_columns()
+  {
+    // Once there are twice as many columns as a change may have, so that
+    // Z holds at most 3 max_rank() columns.
+    if (z.size() <= 2 * max_rank())
+      return;
+    for (auto column = z.begin(); column != z.end();)
+      if (std::find(changed.begin(), changed.end(), column->first) ==
+          changed.end())
+        {
+          z_norm.erase(column->first);
+          column = z.erase(column);
+        }
+      else
+        ++column;
+  }
+
+
+
+  void
+  UpdatedLU::compute_missing_columns()
+  {
+    // One unrefined substitution each: its errors are those of A_0's
+    // factors, which the refinement in solve() corrects.
+    for (const unsigned int i : changed)
+      if (z.find(i) == z.end())
+        {
+          Vector<double> column(size());
+          column(i) = 1.;
+          substitute(column, false);
+          z_norm[i] = column.l1_norm();
+          z.emplace(i, std::move(column));
+          ++n_columns;
+        }
+  }
+
+
+
+  void
+  UpdatedLU::set_change_norms()
+  {
     capacitance_inverse_l1_norm =
-      inverse_norm_estimate(m, {}, [this](Vector<double> &x) {
+      inverse_norm_estimate(changed.size(), {}, [this](Vector<double> &x) {
         capacitance.solve(x);
       });
     z_l1_norm = 0.;
@@ -222,17 +256,6 @@ namespace mbfem
     change_l1_norm = 0.;
     for (const auto &[j, sum] : column_sum)
       change_l1_norm = std::max(change_l1_norm, sum);
-
-    // A nearly singular S (S is I where nothing changed, so its inverse's
-    // norm alone says how close A is to singular relative to A_0), or an A
-    // that may be near its caller's limit of regular systems: refused, the
-    // caller's own LU decides.
-    if (!(capacitance_inverse_l1_norm < 1e10 && condition_bound() < 1e12))
-      {
-        forget_change();
-        return false;
-      }
-    return true;
   }
 
 

@@ -277,6 +277,29 @@ namespace mbfem
                  Vector<double>                       &solution);
 
     /**
+     * The key of @p equations (their coefficients, and which rows say
+     * rho_i = 0) and the rows left as @p unknowns.
+     */
+    void
+    set_unknowns(const std::vector<PairEquation<dim>> &equations,
+                 std::vector<double>                  &key,
+                 std::vector<unsigned int>            &unknowns) const;
+
+    /**
+     * The factorisation of the system of @p equations with @p key, dense
+     * or sparse (use_sparse()), the columns it reads computed first.
+     */
+    void
+    set_system(const std::vector<PairEquation<dim>> &equations,
+               const std::vector<double>            &key,
+               const std::vector<unsigned int>      &unknowns);
+
+    /** The right-hand side of the factorised system for @p loads. */
+    Vector<double>
+    right_hand_side(const std::vector<PairEquation<dim>> &equations,
+                    const IncrementLoads                 &loads) const;
+
+    /**
      * Builds and LU-factorises the system of @p equations over
      * system.unknowns; system.regular says whether it has a solution
      * (condition estimate below 1e12).

@@ -80,6 +80,31 @@ namespace mbfem
     run(Trial trial, const Solve &solve, const std::string &head) const;
 
   private:
+    /** What run() remembers from solve to solve. */
+    struct Progress;
+
+    /**
+     * After a singular trial: back to the last trial that solved, with
+     * only its worst pair switched, and damped from then on. False where
+     * that was done already or no trial solved.
+     */
+    bool
+    damp_after_singular(Progress &progress, Trial &trial) const;
+
+    /**
+     * The states after @p trial: its check's @p next, one pair of it only
+     * where damped or where @p next was met before (which damps), and the
+     * message where the damped states cycle or the undamped iteration
+     * stalls (empty otherwise).
+     */
+    std::string
+    choose_next(Progress                  &progress,
+                const Trial               &trial,
+                Trial                     &next,
+                const std::vector<double> &violation,
+                const unsigned int         iteration,
+                const std::string         &head) const;
+
     /**
      * @p from with only the pair of the largest @p violation switched to
      * its state in @p to: the damped step.

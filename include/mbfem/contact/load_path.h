@@ -168,6 +168,17 @@ namespace mbfem
                 std::vector<double>  &gap) const;
 
     /**
+     * The end where the states of @p pair and its neighbours cycle at one
+     * load (or wander there too long).
+     */
+    Outcome
+    cycle_end(const Trial       &trial,
+              const std::string &head,
+              const unsigned int pair,
+              const double       s,
+              const unsigned int switches) const;
+
+    /**
      * The end at a singular segment that no switch mends: no equilibrium
      * naming the mechanism, or a singular system.
      */

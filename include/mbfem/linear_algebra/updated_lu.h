@@ -152,6 +152,28 @@ namespace mbfem
     recall_base_solution(Vector<double> &x) const;
 
     /**
+     * Row @p i of A_0 replaced by @p row (columns increasing): its
+     * difference d and |row|_1 appended to the change.
+     */
+    void
+    add_difference(const unsigned int i, const Row &row);
+
+    /** Z's columns of rows no longer changed, once Z has grown large. */
+    void
+    drop_unused_columns();
+
+    /** Z's columns of the changed rows not computed yet. */
+    void
+    compute_missing_columns();
+
+    /**
+     * The norms of condition_bound() for the present change, S's LU
+     * computed.
+     */
+    void
+    set_change_norms();
+
+    /**
      * S = I + D Z of the present change, from @p last_entries (S of the
      * change @p last_changed with differences @p last_difference) where
      * they still hold.
