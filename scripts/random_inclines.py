@@ -293,7 +293,9 @@ def run(mbfem, folder, name, mesh, b, factor):
     # Open MPI's session directory of its own: singletons that start and
     # end at the same time under one user share /tmp/ompi.HOST.UID/jf.0,
     # which the one that ends may remove while the other creates its own.
-    with tempfile.TemporaryDirectory(prefix="mbfem-ompi-") as session_base:
+    with tempfile.TemporaryDirectory(prefix="mbfem-ompi-",
+                                     ignore_cleanup_errors=True) \
+            as session_base:
         r = subprocess.run([mbfem, prm], cwd=folder, capture_output=True,
                            text=True,
                            env=dict(os.environ,

@@ -22,9 +22,49 @@
 #include <new>
 #include <streambuf>
 #include <string>
+#include <system_error>
+#include <vector>
 
 namespace
 {
+  /** The run's own directory for Open MPI's session files, if any. */
+  std::string own_session_directory;
+
+  void
+  remove_own_session_directory()
+  {
+    std::error_code error; // nothing to say if it cannot be removed
+    std::filesystem::remove_all(own_session_directory, error);
+  }
+
+  /**
+   * Run without mpirun, every mbfem is an Open MPI singleton, and Open MPI
+   * 4.1 puts all singletons of a user under one /tmp/ompi.HOST.UID/jf.0,
+   * which one that ends removes when it is empty: another that starts
+   * then fails ("could not create its session directory", doc/testing.md).
+   * A directory of the run's own, under TMPDIR or /tmp, removed at exit;
+   * not under mpirun, and not where the user chose one.
+   */
+  void
+  use_own_session_directory()
+  {
+    if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr ||
+        std::getenv("OMPI_MCA_orte_tmpdir_base") != nullptr)
+      return;
+    const char       *tmp = std::getenv("TMPDIR");
+    const std::string pattern =
+      std::string(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp") +
+      "/mbfem-ompi-XXXXXX";
+    std::vector<char> name(pattern.begin(), pattern.end());
+    name.push_back('\0');
+    if (mkdtemp(name.data()) == nullptr)
+      return; // Open MPI's own choice then
+    own_session_directory = name.data();
+    setenv("OMPI_MCA_orte_tmpdir_base", own_session_directory.c_str(), 1);
+    std::atexit(remove_own_session_directory);
+  }
+
+
   /** Where the screen output of the ranks other than 0 goes. */
   class NullBuffer : public std::streambuf
   {
@@ -133,6 +173,7 @@ main(int argc, char *argv[])
   // An isolated singleton needs none; under mpirun the setting is unused.
   // A value the user set stays.
   setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+  use_own_session_directory();
   // Never freed: std::cout is flushed after main returns.
   NullBuffer *const silent = new NullBuffer;
   try

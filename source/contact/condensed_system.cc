@@ -1018,61 +1018,72 @@ namespace mbfem
         forced.push_back(i);
     request_columns(forced);
     for (const auto &flexibility : block_flexibility)
+      add_block_displacement(flexibility, solution, d);
+    return d;
+  }
+
+
+
+  template <int dim>
+  void
+  CondensedSystem<dim>::add_block_displacement(
+    const BlockFlexibility &flexibility,
+    const Vector<double>   &solution,
+    Vector<double>         &d) const
+  {
+    const unsigned int n_sides  = flexibility.pairs.size();
+    unsigned int       n_forced = 0;
+    for (unsigned int t = 0; t < n_sides; ++t)
+      for (unsigned int j = 0; j < dim; ++j)
+        n_forced += (solution(flexibility.pairs[t] * dim + j) != 0.);
+    if (n_forced == 0)
+      return;
+    if (!flexibility.on_demand && 4 * n_forced >= n_sides * dim)
       {
-        const unsigned int n_sides  = flexibility.pairs.size();
-        unsigned int       n_forced = 0;
+        // H_b f by BLAS (H_b's rows are contiguous: the column-major
+        // H_b^T).
+        const types::blas_int n = n_sides * dim, one = 1;
+        if (n == 0)
+          return;
+        Vector<double> f(n), value(n);
         for (unsigned int t = 0; t < n_sides; ++t)
           for (unsigned int j = 0; j < dim; ++j)
-            n_forced += (solution(flexibility.pairs[t] * dim + j) != 0.);
-        if (n_forced == 0)
-          continue;
-        if (!flexibility.on_demand && 4 * n_forced >= n_sides * dim)
-          {
-            // H_b f by BLAS (H_b's rows are contiguous: the column-major
-            // H_b^T), some 2000 x 2000 on the slope's base block.
-            const types::blas_int n = n_sides * dim, one = 1;
-            if (n == 0)
-              continue;
-            Vector<double> f(n), value(n);
-            for (unsigned int t = 0; t < n_sides; ++t)
-              for (unsigned int j = 0; j < dim; ++j)
-                f(t * dim + j) = solution(flexibility.pairs[t] * dim + j);
-            const double alpha = 1., beta = 0.;
-            gemv("T",
-                 &n,
-                 &n,
-                 &alpha,
-                 &flexibility.matrix(0, 0),
-                 &n,
-                 f.begin(),
-                 &one,
-                 &beta,
-                 value.begin(),
-                 &one);
-            for (unsigned int s = 0; s < n_sides; ++s)
-              for (unsigned int i = 0; i < dim; ++i)
-                d(flexibility.pairs[s] * dim + i) += value(s * dim + i);
-            continue;
-          }
-        std::vector<unsigned int> columns;
-        std::vector<double>       forces;
-        for (unsigned int t = 0; t < n_sides; ++t)
-          for (unsigned int j = 0; j < dim; ++j)
-            if (solution(flexibility.pairs[t] * dim + j) != 0.)
-              {
-                columns.push_back(t * dim + j);
-                forces.push_back(solution(flexibility.pairs[t] * dim + j));
-              }
+            f(t * dim + j) = solution(flexibility.pairs[t] * dim + j);
+        const double alpha = 1., beta = 0.;
+        gemv("T",
+             &n,
+             &n,
+             &alpha,
+             &flexibility.matrix(0, 0),
+             &n,
+             f.begin(),
+             &one,
+             &beta,
+             value.begin(),
+             &one);
         for (unsigned int s = 0; s < n_sides; ++s)
           for (unsigned int i = 0; i < dim; ++i)
-            {
-              double value = 0.;
-              for (unsigned int c = 0; c < columns.size(); ++c)
-                value += flexibility(s * dim + i, columns[c]) * forces[c];
-              d(flexibility.pairs[s] * dim + i) += value;
-            }
+            d(flexibility.pairs[s] * dim + i) += value(s * dim + i);
+        return;
       }
-    return d;
+    // Few forced sides, or columns on demand: the forced columns only.
+    std::vector<unsigned int> columns;
+    std::vector<double>       forces;
+    for (unsigned int t = 0; t < n_sides; ++t)
+      for (unsigned int j = 0; j < dim; ++j)
+        if (solution(flexibility.pairs[t] * dim + j) != 0.)
+          {
+            columns.push_back(t * dim + j);
+            forces.push_back(solution(flexibility.pairs[t] * dim + j));
+          }
+    for (unsigned int s = 0; s < n_sides; ++s)
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          double value = 0.;
+          for (unsigned int c = 0; c < columns.size(); ++c)
+            value += flexibility(s * dim + i, columns[c]) * forces[c];
+          d(flexibility.pairs[s] * dim + i) += value;
+        }
   }
 
 

@@ -367,6 +367,15 @@ namespace mbfem
     bool
     use_sparse(const std::vector<unsigned int> &unknowns) const;
 
+    /**
+     * Adds H_b f to @p d for one block: f its sides' forces in
+     * @p solution (relative_displacement()).
+     */
+    void
+    add_block_displacement(const BlockFlexibility &flexibility,
+                           const Vector<double>   &solution,
+                           Vector<double>         &d) const;
+
     /** Sets system.regular from a condition estimate of the dense LU. */
     void
     estimate_condition(Factorisation &system, const double norm) const;

@@ -169,7 +169,7 @@ namespace mbfem
 
     /**
      * The end where the states of @p pair and its neighbours cycle at one
-     * load (or wander there too long).
+     * load, wander there too long, or the path has switched too often.
      */
     Outcome
     cycle_end(const Trial       &trial,
