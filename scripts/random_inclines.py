@@ -290,16 +290,8 @@ def run(mbfem, folder, name, mesh, b, factor):
     results = os.path.join(folder, name)
     shutil.rmtree(results, ignore_errors=True)
     start = time.time()
-    # Open MPI's session directory of its own: singletons that start and
-    # end at the same time under one user share /tmp/ompi.HOST.UID/jf.0,
-    # which the one that ends may remove while the other creates its own.
-    with tempfile.TemporaryDirectory(prefix="mbfem-ompi-",
-                                     ignore_cleanup_errors=True) \
-            as session_base:
-        r = subprocess.run([mbfem, prm], cwd=folder, capture_output=True,
-                           text=True,
-                           env=dict(os.environ,
-                                    OMPI_MCA_orte_tmpdir_base=session_base))
+    r = subprocess.run([mbfem, prm], cwd=folder, capture_output=True,
+                       text=True)
     seconds = time.time() - start
     m = re.search(r"Statics certificate at t = ([0-9.e+-]+): no statically "
                   r"admissible contact forces exist.*?strength factor "
