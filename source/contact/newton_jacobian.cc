@@ -184,7 +184,7 @@ namespace mbfem
     // (METIS's builds A^T A's pattern first, which on the cube took more
     // time than the factorisation); METIS's fill is less where the
     // analysis is kept.
-    lu.set_ordering(drop_zeros ? SparseLU::Ordering::amd :
+    lu.set_ordering(drop_zeros ? SparseLU::Ordering::nested_dissection :
                                  SparseLU::Ordering::metis);
     ++n_factorized;
     // No factors to reuse until this factorisation has succeeded.

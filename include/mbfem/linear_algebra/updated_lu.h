@@ -208,7 +208,7 @@ namespace mbfem
      * dear where rows are long: on the 5 x 5 x 5 cube 40.3 -> 30.1 s, on
      * the jointed slope 20.1 -> 21.5 s (side by side, one thread each).
      */
-    SparseLU lu{SparseLU::Ordering::amd};
+    SparseLU lu{SparseLU::Ordering::nested_dissection};
     bool     is_factorized = false;
     double   base_norm     = 0.;
     /** A_0^{-1} e_i for the rows changed since the factorisation. */
