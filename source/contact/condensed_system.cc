@@ -780,7 +780,10 @@ namespace mbfem
     system.size    = n;
     system.matrix.reinit(0, 0);
     if (!system.sparse)
-      system.sparse = std::make_unique<UpdatedLU>();
+      {
+        system.sparse = std::make_unique<UpdatedLU>();
+        system.sparse->set_blocks(dim, n_r);
+      }
     UpdatedLU &lu = *system.sparse;
 
     // The rows whose equations changed since the base, replaced.

@@ -49,6 +49,7 @@ namespace mbfem
                          const bool              mode_diagonal)
   {
     n_rows_of_a = rows_of_a.size();
+    lu.set_blocks(block_size, n_rows_of_a);
     DynamicSparsityPattern dsp(n, n);
     if (mode_diagonal)
       for (unsigned int i = n_rows_of_a; i < n; ++i)

@@ -80,6 +80,14 @@ namespace mbfem
 
 
 
+  void
+  UpdatedLU::set_blocks(const unsigned int size, const unsigned int n_in_blocks)
+  {
+    lu.set_blocks(size, n_in_blocks);
+  }
+
+
+
   bool
   UpdatedLU::factorized() const
   {

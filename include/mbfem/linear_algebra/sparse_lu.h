@@ -75,6 +75,14 @@ namespace mbfem
     set_ordering(const Ordering new_ordering);
 
     /**
+     * For the nested_dissection ordering: the first @p n_in_blocks rows
+     * and columns come in blocks of @p size (a contact pair's directions),
+     * which it keeps together. Without, each row is on its own.
+     */
+    void
+    set_blocks(const unsigned int size, const unsigned int n_in_blocks);
+
+    /**
      * x = A^{-1} x, in place, with the last factorisation; with @p refine
      * UMFPACK's iterative refinement (its default, up to two steps, each
      * a product with A and another substitution) improves it, which a
@@ -110,6 +118,7 @@ namespace mbfem
     void               *symbolic = nullptr;
     void               *numeric  = nullptr;
     Ordering            ordering;
+    unsigned int        block_size = 1, n_blocked = 0;
     unsigned int        reused = 0, analysed = 0;
     /** UMFPACK's flops and entries of L and U of the last factorisation. */
     double factor_flops = 0., factor_entries = 0.;

@@ -55,6 +55,10 @@ namespace mbfem
     bool
     factorize(const std::vector<Row> &rows);
 
+    /** SparseLU::set_blocks() of the bases' factorisations. */
+    void
+    set_blocks(const unsigned int size, const unsigned int n_in_blocks);
+
     /** Whether a base is factorised. */
     bool
     factorized() const;
