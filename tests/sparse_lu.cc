@@ -9,8 +9,10 @@
 // different pattern is analysed again; a matrix with a third of its rows
 // reduced to their diagonal, factorised with its zeros kept and then left
 // out, is solved as accurately each time, analysed anew for the nonzeros
-// (which a pattern with the zeros would not need) and reused for them; a
-// matrix with a zero row is reported singular (false), not thrown.
+// (which a pattern with the zeros would not need) and reused for them; the
+// nested_dissection ordering (SparseLU::set_blocks(), a pair's two rows
+// merged or not) solves such a matrix as accurately; a matrix with a zero
+// row is reported singular (false), not thrown.
 
 #include <mbfem/linear_algebra/sparse_lu.h>
 
@@ -140,6 +142,29 @@ main()
                          matrix,
                          b,
                          drop_zeros);
+
+  // METIS's nested dissection of the merged graph (a pair's two rows and
+  // columns one vertex, the singletons first and left out), with every
+  // third pair's rows reduced to their diagonal (open pairs) and the zeros
+  // left out: as accurate, once with the blocks declared and once without.
+  fill(pattern, matrix, n_modes, random);
+  for (unsigned int i = 0; i < n - n_modes; i += 6)
+    for (unsigned int r = i; r < i + 2; ++r)
+      for (auto entry = matrix.begin(r); entry != matrix.end(r); ++entry)
+        if (entry->column() != r)
+          entry->value() = 0.;
+  for (const unsigned int block_size : {2u, 1u})
+    {
+      mbfem::SparseLU nested(mbfem::SparseLU::Ordering::nested_dissection);
+      nested.set_blocks(block_size, n - n_modes);
+      factorise_and_report(block_size == 2 ?
+                             "nested dissection, pairs merged: " :
+                             "nested dissection, rows alone: ",
+                           nested,
+                           matrix,
+                           b,
+                           true);
+    }
 
   // A zero row: singular, reported by false.
   fill(pattern, matrix, n_modes, random);
