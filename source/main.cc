@@ -27,6 +27,23 @@
 
 namespace
 {
+  /**
+   * Whether a launcher started this process (Open MPI's mpirun sets
+   * OMPI_COMM_WORLD_SIZE; Slurm's srun and other PMIx or PMI launchers set
+   * PMIX_RANK or PMI_RANK and PMI_SIZE): else it is an Open MPI singleton.
+   */
+  bool
+  launched()
+  {
+    for (const char *variable :
+         {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+      if (std::getenv(variable) != nullptr)
+        return true;
+    return false;
+  }
+
+
+
   /** The run's own directory for Open MPI's session files, if any. */
   std::string own_session_directory;
 
@@ -48,8 +65,7 @@ namespace
   void
   use_own_session_directory()
   {
-    if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr ||
-        std::getenv("OMPI_MCA_orte_tmpdir_base") != nullptr)
+    if (launched() || std::getenv("OMPI_MCA_orte_tmpdir_base") != nullptr)
       return;
     const char       *tmp = std::getenv("TMPDIR");
     const std::string pattern =
@@ -68,16 +84,17 @@ namespace
   /**
    * Run without mpirun, Open MPI's default messaging layer (the cm PML)
    * probes the network libraries (libfabric, PSM2) at start-up although a
-   * singleton sends nothing to another process: 0.2 s of every run on this
-   * machine (an MPI_Init and MPI_Finalize alone: 0.24 s, with the ob1 PML
-   * 0.03 s; doc/testing.md). The ob1 PML, which a singleton's messages to
-   * itself need nothing more than; not under mpirun, and not where the
-   * user chose one.
+   * singleton sends nothing to another process: 0.2 to 0.3 s of every run
+   * on this machine (an MPI_Init and MPI_Finalize alone: 0.24 s, with the
+   * ob1 PML 0.03 s; `mbfem --version` 0.54 s, with it 0.26 s;
+   * doc/testing.md). The ob1 PML, which a singleton's messages to itself
+   * need nothing more than; not under a launcher (launched()), and not
+   * where the user chose one.
    */
   void
   use_singleton_messaging()
   {
-    if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr)
+    if (launched())
       return;
     setenv("OMPI_MCA_pml", "ob1", 0);
   }

@@ -11,8 +11,9 @@
 // out, is solved as accurately each time, analysed anew for the nonzeros
 // (which a pattern with the zeros would not need) and reused for them; the
 // nested_dissection ordering (SparseLU::set_blocks(), a pair's two rows
-// merged or not) solves such a matrix as accurately; a matrix with a zero
-// row is reported singular (false), not thrown.
+// merged or not, pairs half reduced, blocks not filling the rows declared)
+// solves such a matrix as accurately with METIS's order; a matrix with a
+// zero row is reported singular (false), not thrown.
 
 #include <mbfem/linear_algebra/sparse_lu.h>
 
@@ -21,6 +22,7 @@
 
 #include <cstdio>
 #include <random>
+#include <utility>
 
 using namespace dealii;
 
@@ -145,25 +147,31 @@ main()
 
   // METIS's nested dissection of the merged graph (a pair's two rows and
   // columns one vertex, the singletons first and left out), with every
-  // third pair's rows reduced to their diagonal (open pairs) and the zeros
-  // left out: as accurate, once with the blocks declared and once without.
+  // third pair's rows reduced to their diagonal (open pairs), one row of
+  // every fifth pair too (a pair half singleton), and the zeros left out:
+  // as accurate, with METIS's order used, for blocks of two over all pair
+  // rows, none, and blocks of three over a count that is no multiple of
+  // three.
   fill(pattern, matrix, n_modes, random);
-  for (unsigned int i = 0; i < n - n_modes; i += 6)
-    for (unsigned int r = i; r < i + 2; ++r)
-      for (auto entry = matrix.begin(r); entry != matrix.end(r); ++entry)
-        if (entry->column() != r)
-          entry->value() = 0.;
-  for (const unsigned int block_size : {2u, 1u})
+  for (unsigned int i = 0; i < n - n_modes; i += 2)
+    for (unsigned int r = i; r < i + (i % 10 == 0 ? 1 : 2); ++r)
+      if (i % 6 == 0 || i % 10 == 0)
+        for (auto entry = matrix.begin(r); entry != matrix.end(r); ++entry)
+          if (entry->column() != r)
+            entry->value() = 0.;
+  for (const auto &[block_size, n_blocked] :
+       {std::pair<unsigned int, unsigned int>{2, n - n_modes},
+        {1, n - n_modes},
+        {3, n - n_modes - 1}})
     {
       mbfem::SparseLU nested(mbfem::SparseLU::Ordering::nested_dissection);
-      nested.set_blocks(block_size, n - n_modes);
-      factorise_and_report(block_size == 2 ?
-                             "nested dissection, pairs merged: " :
-                             "nested dissection, rows alone: ",
-                           nested,
-                           matrix,
-                           b,
-                           true);
+      nested.set_blocks(block_size, n_blocked);
+      std::printf("nested dissection, blocks of %u over %u rows: ",
+                  block_size,
+                  n_blocked);
+      factorise_and_report("", nested, matrix, b, true);
+      std::printf("  METIS's order used: %s\n",
+                  nested.order_given() ? "yes" : "NO");
     }
 
   // A zero row: singular, reported by false.

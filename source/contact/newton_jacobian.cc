@@ -181,10 +181,10 @@ namespace mbfem
       zeros += (entry->value() == 0.);
     const bool drop_zeros =
       zeros > internal::zero_fraction * jacobian.n_nonzero_elements();
-    // An analysis per factorisation where the zeros are dropped: COLAMD's
-    // (METIS's builds A^T A's pattern first, which on the cube took more
-    // time than the factorisation); METIS's fill is less where the
-    // analysis is kept.
+    // An analysis per factorisation where the zeros are dropped: the
+    // nested dissection of the merged graph (UMFPACK's METIS option builds
+    // A^T A's pattern whole, which on the cube took more time than the
+    // factorisation); where the analysis is kept, that option.
     lu.set_ordering(drop_zeros ? SparseLU::Ordering::nested_dissection :
                                  SparseLU::Ordering::metis);
     ++n_factorized;

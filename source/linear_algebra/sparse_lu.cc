@@ -1,3 +1,4 @@
+#include <mbfem/base/interruption.h>
 #include <mbfem/linear_algebra/sparse_lu.h>
 
 #include <deal.II/base/exceptions.h>
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -95,9 +97,9 @@ namespace mbfem
       // Rows in blocks too: the graph's cost is its entries times the
       // vertices in a row (some 0.1 s a factorisation on the cube with
       // the rows alone).
+      const long n_blocks = (n_blocked + block_size - 1) / block_size;
       const auto block_of = [&](const long i) {
-        return i < n_blocked ? i / block_size :
-                               n_blocked / block_size + (i - n_blocked);
+        return i < n_blocked ? i / block_size : n_blocks + (i - n_blocked);
       };
       auto &rows = graph.rows;
       for (long j = 0; j < n;)
@@ -189,13 +191,19 @@ namespace mbfem
     {
       ColumnGraph graph;
       mark_singletons(n, start, index, graph);
-      merge_blocks(n, start, index, block_size, n_blocked, graph);
+      merge_blocks(
+        n, start, index, block_size, std::min<long>(n_blocked, n), graph);
       connect(n, graph);
+      // METIS's indices are idx_t (32 bits here); a graph without edges it
+      // is not given (CHOLMOD does not either).
+      if (graph.neighbours.size() >
+          static_cast<std::size_t>(std::numeric_limits<idx_t>::max()))
+        return {};
 
       idx_t              n_vertices = graph.weights.size();
       std::vector<idx_t> permutation(n_vertices), inverse(n_vertices);
       std::iota(permutation.begin(), permutation.end(), 0);
-      if (n_vertices > 2)
+      if (n_vertices > 2 && !graph.neighbours.empty())
         {
           std::array<idx_t, METIS_NOPTIONS> options;
           METIS_SetDefaultOptions(options.data());
@@ -311,11 +319,13 @@ namespace mbfem
     else
       {
         clear_symbolic();
-        const std::vector<long> order =
-          ordering == Ordering::nested_dissection ?
-            nested_dissection(
-              n, column_start, row_index, block_size, n_blocked) :
-            std::vector<long>();
+        // METIS, called here or by UMFPACK, turns SIGTERM into an error
+        // return: held back, a signal reaches mbfem's handler afterwards.
+        const TerminationSignalsHeld held;
+        std::vector<long>            order;
+        if (ordering == Ordering::nested_dissection)
+          order = nested_dissection(
+            n, column_start, row_index, block_size, n_blocked);
         // With an order given, UMFPACK's unsymmetric strategy keeps it
         // (up to a postordering); without, it orders by c.
         check(umfpack_dl_qsymbolic(n,
@@ -328,6 +338,7 @@ namespace mbfem
                                    c.data(),
                                    info.data()),
               "symbolic analysis");
+        given_order = info[UMFPACK_ORDERING_USED] == UMFPACK_ORDERING_GIVEN;
         ++analysed;
       }
     const long status = umfpack_dl_numeric(column_start.data(),
@@ -402,6 +413,14 @@ namespace mbfem
   SparseLU::substitutions_per_factorization() const
   {
     return factor_entries > 0. ? factor_flops / (2. * factor_entries) : 0.;
+  }
+
+
+
+  bool
+  SparseLU::order_given() const
+  {
+    return given_order;
   }
 
 

@@ -100,6 +100,14 @@ namespace mbfem
     double
     substitutions_per_factorization() const;
 
+    /**
+     * Whether the last analysis used the nested_dissection ordering's
+     * order (false where METIS failed and UMFPACK ordered instead, or for
+     * the other orderings).
+     */
+    bool
+    order_given() const;
+
     /** How often factorize() reused the symbolic analysis, and made one. */
     std::pair<unsigned int, unsigned int>
     symbolic_counts() const;
@@ -119,6 +127,7 @@ namespace mbfem
     void               *numeric  = nullptr;
     Ordering            ordering;
     unsigned int        block_size = 1, n_blocked = 0;
+    bool                given_order = false;
     unsigned int        reused = 0, analysed = 0;
     /** UMFPACK's flops and entries of L and U of the last factorisation. */
     double factor_flops = 0., factor_entries = 0.;

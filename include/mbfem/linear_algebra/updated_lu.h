@@ -207,10 +207,12 @@ namespace mbfem
     SparsityPattern      pattern;
     SparseMatrix<double> base;
     /**
-     * COLAMD, not METIS: a base's pattern is analysed once (the unit rows
-     * move with the states), and METIS's analysis of A^T A's pattern is
-     * dear where rows are long: on the 5 x 5 x 5 cube 40.3 -> 30.1 s, on
-     * the jointed slope 20.1 -> 21.5 s (side by side, one thread each).
+     * A base's pattern is analysed once (the unit rows move with the
+     * states), so not UMFPACK's METIS option, whose analysis of A^T A's
+     * pattern is dear where rows are long (with it against COLAMD: the
+     * 5 x 5 x 5 cube 40.3 -> 30.1 s, the jointed slope 20.1 -> 21.5 s),
+     * but the nested dissection of a merged graph (set_blocks()): METIS's
+     * fill at COLAMD's cost (doc/state_iteration.md).
      */
     SparseLU lu{SparseLU::Ordering::nested_dissection};
     bool     is_factorized = false;
