@@ -16,22 +16,14 @@ namespace mbfem
       signal_received = signal;
     }
 
-    /** SIGINT and SIGTERM. */
-    sigset_t
-    termination_signals()
+    /** Blocks (SIG_BLOCK) or unblocks (SIG_UNBLOCK) SIGINT and SIGTERM. */
+    void
+    mask_termination_signals(const int how)
     {
       sigset_t signals;
       sigemptyset(&signals);
       sigaddset(&signals, SIGINT);
       sigaddset(&signals, SIGTERM);
-      return signals;
-    }
-
-    /** Blocks (SIG_BLOCK) or unblocks (SIG_UNBLOCK) SIGINT and SIGTERM. */
-    void
-    mask_termination_signals(const int how)
-    {
-      const sigset_t signals = termination_signals();
       sigprocmask(how, &signals, nullptr);
     }
   } // namespace
@@ -66,21 +58,6 @@ namespace mbfem
   {
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
-  }
-
-
-
-  TerminationSignalsHeld::TerminationSignalsHeld()
-  {
-    const sigset_t signals = termination_signals();
-    sigprocmask(SIG_BLOCK, &signals, &previous);
-  }
-
-
-
-  TerminationSignalsHeld::~TerminationSignalsHeld()
-  {
-    sigprocmask(SIG_SETMASK, &previous, nullptr);
   }
 
 

@@ -1,4 +1,3 @@
-#include <mbfem/base/interruption.h>
 #include <mbfem/linear_algebra/sparse_lu.h>
 
 #include <deal.II/base/exceptions.h>
@@ -319,10 +318,13 @@ namespace mbfem
     else
       {
         clear_symbolic();
-        // METIS, called here or by UMFPACK, turns SIGTERM into an error
-        // return: held back, a signal reaches mbfem's handler afterwards.
-        const TerminationSignalsHeld held;
-        std::vector<long>            order;
+        // METIS (here or through UMFPACK) puts its own handler on SIGTERM
+        // while it runs and turns a signal into an error return: a SIGTERM
+        // in those milliseconds is lost (the run goes on with COLAMD's
+        // order; send it again). Holding signals back in this thread is no
+        // cure: OpenBLAS's threads do not block them, and one of them would
+        // then run METIS's handler, which jumps into this thread's stack.
+        std::vector<long> order;
         if (ordering == Ordering::nested_dissection)
           order = nested_dissection(
             n, column_start, row_index, block_size, n_blocked);

@@ -1,8 +1,6 @@
 #ifndef mbfem_base_interruption_h
 #define mbfem_base_interruption_h
 
-#include <csignal>
-
 namespace mbfem
 {
   /**
@@ -31,26 +29,6 @@ namespace mbfem
    */
   void
   release_termination_signals();
-
-  /**
-   * Holds SIGINT and SIGTERM back while it lives, the mask before it
-   * restored after: METIS (gk_sigtrap()) puts its own handler on SIGTERM
-   * during a call and turns a signal into an error return, so a signal
-   * during an ordering would be lost. Held back, it reaches mbfem's
-   * handler (or default action) afterwards.
-   */
-  class TerminationSignalsHeld
-  {
-  public:
-    TerminationSignalsHeld();
-    ~TerminationSignalsHeld();
-    TerminationSignalsHeld(const TerminationSignalsHeld &) = delete;
-    TerminationSignalsHeld &
-    operator=(const TerminationSignalsHeld &) = delete;
-
-  private:
-    sigset_t previous;
-  };
 
   /** The signal received since catch_termination_signals(), or 0. */
   int
