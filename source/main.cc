@@ -82,20 +82,23 @@ namespace
 
 
   /**
-   * Run without mpirun, Open MPI's default messaging layer (the cm PML)
-   * probes the network libraries (libfabric, PSM2) at start-up although a
-   * singleton sends nothing to another process: 0.2 to 0.3 s of every run
-   * on this machine (an MPI_Init and MPI_Finalize alone: 0.24 s, with the
-   * ob1 PML 0.03 s; `mbfem --version` 0.54 s, with it 0.26 s;
-   * doc/testing.md). The ob1 PML, which a singleton's messages to itself
-   * need nothing more than; not under a launcher (launched()), and not
-   * where the user chose one.
+   * Run without a launcher (launched()), Open MPI makes mbfem a singleton
+   * and pays for what only several processes need; a value the user set
+   * stays:
+   * - a helper daemon (orted) for the one process, some 0.4 s of every run
+   *   (a one-block model: 1.1 -> 0.7 s): an isolated singleton needs none;
+   * - the default messaging layer (the cm PML) probes the network
+   *   libraries (libfabric, PSM2), 0.2 to 0.3 s more (an MPI_Init and
+   *   MPI_Finalize alone: 0.24 s, with the ob1 PML 0.03 s; `mbfem
+   *   --version` 0.54 s, with it 0.26 s; doc/testing.md): ob1, which a
+   *   singleton's messages to itself need nothing more than.
    */
   void
-  use_singleton_messaging()
+  use_singleton_settings()
   {
     if (launched())
       return;
+    setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
     setenv("OMPI_MCA_pml", "ob1", 0);
   }
 
@@ -204,12 +207,7 @@ main(int argc, char *argv[])
   // action: held back until it is done, a signal then ends the run at its
   // first check, with mbfem's message.
   mbfem::hold_termination_signals();
-  // Run without mpirun, Open MPI starts a helper daemon (orted) for the one
-  // process, some 0.4 s of every run (a one-block model: 1.1 -> 0.7 s).
-  // An isolated singleton needs none; under mpirun the setting is unused.
-  // A value the user set stays.
-  setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
-  use_singleton_messaging();
+  use_singleton_settings();
   use_own_session_directory();
   // Never freed: std::cout is flushed after main returns.
   NullBuffer *const silent = new NullBuffer;

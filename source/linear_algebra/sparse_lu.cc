@@ -193,8 +193,7 @@ namespace mbfem
       merge_blocks(
         n, start, index, block_size, std::min<long>(n_blocked, n), graph);
       connect(n, graph);
-      // METIS's indices are idx_t (32 bits here); a graph without edges it
-      // is not given (CHOLMOD does not either).
+      // METIS's indices are idx_t (32 bits here).
       if (graph.neighbours.size() >
           static_cast<std::size_t>(std::numeric_limits<idx_t>::max()))
         return {};
@@ -202,6 +201,7 @@ namespace mbfem
       idx_t              n_vertices = graph.weights.size();
       std::vector<idx_t> permutation(n_vertices), inverse(n_vertices);
       std::iota(permutation.begin(), permutation.end(), 0);
+      // A graph without edges METIS is not given (CHOLMOD does not either).
       if (n_vertices > 2 && !graph.neighbours.empty())
         {
           std::array<idx_t, METIS_NOPTIONS> options;
