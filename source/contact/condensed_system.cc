@@ -141,6 +141,7 @@ namespace mbfem
           flexibility.diagonal = sampled_diagonal(*flexibility.on_demand, rows);
         flexibility.rows = std::move(rows);
         flexibility.columns.resize(flexibility.rows.size());
+        flexibility.compact = !flexibility.local;
       }
     else if (flexibility.local)
       {
@@ -339,39 +340,135 @@ namespace mbfem
           return columns.empty();
         }))
       return; // the same on every rank
-    // Each rank computes its blocks' columns (and makes room for the
-    // others'), then they exchange them.
+    if (Parallel::n_ranks() == 1)
+      {
+        for (unsigned int b = 0; b < block_flexibility.size(); ++b)
+          if (!missing[b].empty())
+            compute_columns(block_flexibility[b], missing[b]);
+        return;
+      }
+    // Each rank computes its blocks' columns and makes room for what it
+    // receives of the others', then the owners send them.
+    const unsigned int                     n_blocks = block_flexibility.size();
+    std::vector<std::vector<unsigned int>> old(n_blocks);
+    std::vector<unsigned int>              n_kept_before(n_blocks);
+    std::vector<std::vector<double>>       messages(n_blocks);
     Parallel::together(MPI_COMM_WORLD, [&]() {
-      for (unsigned int b = 0; b < block_flexibility.size(); ++b)
-        if (missing[b].empty())
-          continue;
-        else if (block_flexibility[b].local)
-          compute_columns(block_flexibility[b], missing[b]);
-        else
-          for (const unsigned int c : missing[b])
-            block_flexibility[b].columns[c].assign(
-              block_flexibility[b].rows.size(), 0.);
+      for (unsigned int b = 0; b < n_blocks; ++b)
+        if (!missing[b].empty())
+          {
+            const BlockFlexibility &flexibility = block_flexibility[b];
+            n_kept_before[b]                    = flexibility.kept_rows.size();
+            old[b] = keep_rows(flexibility, missing[b], messages[b]);
+            if (flexibility.local)
+              compute_columns(flexibility, missing[b]);
+          }
     });
-    if (Parallel::n_ranks() > 1)
-      for (unsigned int b = 0; b < block_flexibility.size(); ++b)
-        share_columns(block_flexibility[b], missing[b]);
+    for (unsigned int b = 0; b < n_blocks; ++b)
+      if (!missing[b].empty())
+        share_columns(block_flexibility[b],
+                      missing[b],
+                      old[b],
+                      n_kept_before[b],
+                      messages[b]);
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  CondensedSystem<dim>::keep_rows(const BlockFlexibility          &flexibility,
+                                  const std::vector<unsigned int> &columns,
+                                  std::vector<double> &message) const
+  {
+    // Every direction of a side with a computed column: the rows that
+    // assemble(), sparse_row() and add_row() read are those of pairs with
+    // an unknown, whose own columns they request.
+    std::vector<unsigned int> old;
+    for (unsigned int c = 0; c < flexibility.columns.size(); ++c)
+      if (!flexibility.columns[c].empty())
+        old.push_back(c);
+    if (flexibility.kept_position.empty())
+      flexibility.kept_position.assign(flexibility.rows.size(), -1);
+    const std::size_t n_before = flexibility.kept_rows.size();
+    for (const unsigned int c : columns)
+      if (flexibility.kept_position[c] < 0)
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            const unsigned int r         = (c / dim) * dim + i;
+            flexibility.kept_position[r] = flexibility.kept_rows.size();
+            flexibility.kept_rows.push_back(r);
+          }
+    const std::size_t n_kept = flexibility.kept_rows.size();
+    // share_columns() sends some 8 MB at a time.
+    const std::size_t n_values =
+      columns.size() * n_kept + old.size() * (n_kept - n_before);
+    message.assign(std::min<std::size_t>(n_values, std::size_t(1) << 20), 0.);
+    if (flexibility.compact)
+      {
+        // Exactly n_kept each: resize() would double a column's capacity.
+        for (const unsigned int c : old)
+          {
+            std::vector<double> grown(n_kept, 0.);
+            std::copy(flexibility.columns[c].begin(),
+                      flexibility.columns[c].end(),
+                      grown.begin());
+            flexibility.columns[c].swap(grown);
+          }
+        for (const unsigned int c : columns)
+          flexibility.columns[c].assign(n_kept, 0.);
+      }
+    return old;
   }
 
 
 
   template <int dim>
   void
-  CondensedSystem<dim>::share_columns(
-    const BlockFlexibility          &flexibility,
-    const std::vector<unsigned int> &columns) const
+  CondensedSystem<dim>::share_columns(const BlockFlexibility &flexibility,
+                                      const std::vector<unsigned int> &columns,
+                                      const std::vector<unsigned int> &old,
+                                      const unsigned int   n_kept_before,
+                                      std::vector<double> &message) const
   {
-    // One message a column, into the room request_columns() made: no
-    // allocation here, where a failure would not reach the other ranks.
-    for (const unsigned int c : columns)
+    // In messages of message.size() values, into the room keep_rows()
+    // made: no allocation here, where a failure would not reach the other
+    // ranks. The owner's numbers, so that every rank holds the same: the
+    // owner fills a message and then sends it, the others receive one
+    // before they read it.
+    const auto       &kept   = flexibility.kept_rows;
+    const std::size_t n_kept = kept.size();
+    const std::size_t n_values =
+      columns.size() * n_kept + old.size() * (n_kept - n_kept_before);
+    std::size_t sent = 0, p = 0;
+    const auto  exchange = [&]() {
       Parallel::broadcast(flexibility.communicator,
                           flexibility.owner,
-                          flexibility.columns[c].data(),
-                          flexibility.columns[c].size());
+                          message.data(),
+                          std::min(message.size(), n_values - sent));
+    };
+    const auto visit = [&](const unsigned int c, const std::size_t i) {
+      if (!flexibility.local && p == 0)
+        exchange();
+      if (flexibility.local)
+        message[p] = flexibility.columns[c][kept[i]];
+      else
+        flexibility.columns[c][i] = message[p];
+      if (++p == std::min(message.size(), n_values - sent))
+        {
+          if (flexibility.local)
+            exchange();
+          sent += p;
+          p = 0;
+        }
+    };
+    for (const unsigned int c : columns)
+      for (std::size_t i = 0; i < n_kept; ++i)
+        visit(c, i);
+    for (const unsigned int c : old)
+      for (std::size_t i = n_kept_before; i < n_kept; ++i)
+        visit(c, i);
+    std::vector<double>().swap(message);
   }
 
 
@@ -836,7 +933,8 @@ namespace mbfem
     const std::vector<unsigned int> &unknowns) const
   {
     // Every direction of a pair with an unknown left free: sparse_row()
-    // reads H_b there where a column it needs was not computed.
+    // reads the columns computed, and a direction that becomes an unknown
+    // later then needs no new column (which would make a new base).
     std::vector<unsigned int> columns;
     for (const unsigned int row : unknowns)
       for (unsigned int f = 0; f < dim; ++f)
@@ -880,17 +978,15 @@ namespace mbfem
                   for (unsigned int f = 0; f < dim; ++f)
                     {
                       // H_b(s e, t f) as assemble() and
-                      // relative_displacement() read it; on demand where
-                      // column t f was not computed (a pair left out,
-                      // whose force is zero), its transpose, from the row's
-                      // own column (computed: sparse_columns()). A column
+                      // relative_displacement() read it; on demand not
+                      // where column t f was not computed: a pair left
+                      // out, whose unknowns are x_i = 0 (under mpirun the
+                      // other ranks hold no row of it either). A column
                       // computed later makes a new base (base_columns).
-                      const double h =
-                        !flexibility.on_demand ?
-                          flexibility.matrix(s * dim + e, t * dim + f) :
-                        !flexibility.columns[t * dim + f].empty() ?
-                          flexibility.columns[t * dim + f][s * dim + e] :
-                          flexibility.columns[s * dim + e][t * dim + f];
+                      if (flexibility.on_demand &&
+                          flexibility.columns[t * dim + f].empty())
+                        continue;
+                      const double h = flexibility(s * dim + e, t * dim + f);
                       entries.emplace_back(flexibility.pairs[t] * dim + f,
                                            row_scale * a * h /
                                              flexibility_scale);
@@ -1020,8 +1116,44 @@ namespace mbfem
       if (solution(i) != 0.)
         forced.push_back(i);
     request_columns(forced);
-    for (const auto &flexibility : block_flexibility)
-      add_block_displacement(flexibility, solution, d);
+    if (Parallel::n_ranks() == 1 ||
+        std::none_of(block_flexibility.begin(),
+                     block_flexibility.end(),
+                     [](const auto &flexibility) {
+                       return flexibility.on_demand != nullptr;
+                     }))
+      {
+        for (const auto &flexibility : block_flexibility)
+          add_block_displacement(flexibility, solution, d);
+        return d;
+      }
+    // Under mpirun an on-demand block's H_b f comes from its owner (the
+    // others hold its columns at the kept rows only), computed as on one
+    // rank, and every block's is added in the same order as there.
+    const unsigned int               n_blocks = block_flexibility.size();
+    std::vector<std::vector<double>> from_owner(n_blocks);
+    Parallel::together(MPI_COMM_WORLD, [&]() {
+      for (unsigned int b = 0; b < n_blocks; ++b)
+        if (block_flexibility[b].on_demand)
+          {
+            from_owner[b] = block_displacement(block_flexibility[b], solution);
+          }
+    });
+    for (unsigned int b = 0; b < n_blocks; ++b)
+      {
+        const BlockFlexibility &flexibility = block_flexibility[b];
+        if (!flexibility.on_demand)
+          {
+            add_block_displacement(flexibility, solution, d);
+            continue;
+          }
+        Parallel::broadcast(flexibility.communicator,
+                            flexibility.owner,
+                            from_owner[b].data(),
+                            from_owner[b].size());
+        for (unsigned int r = 0; r < from_owner[b].size(); ++r)
+          d(flexibility.pairs[r / dim] * dim + r % dim) += from_owner[b][r];
+      }
     return d;
   }
 
@@ -1070,6 +1202,19 @@ namespace mbfem
         return;
       }
     // Few forced sides, or columns on demand: the forced columns only.
+    const std::vector<double> value = block_displacement(flexibility, solution);
+    for (unsigned int r = 0; r < value.size(); ++r)
+      d(flexibility.pairs[r / dim] * dim + r % dim) += value[r];
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  CondensedSystem<dim>::block_displacement(const BlockFlexibility &flexibility,
+                                           const Vector<double> &solution) const
+  {
+    const unsigned int        n_sides = flexibility.pairs.size();
     std::vector<unsigned int> columns;
     std::vector<double>       forces;
     for (unsigned int t = 0; t < n_sides; ++t)
@@ -1079,14 +1224,15 @@ namespace mbfem
             columns.push_back(t * dim + j);
             forces.push_back(solution(flexibility.pairs[t] * dim + j));
           }
-    for (unsigned int s = 0; s < n_sides; ++s)
-      for (unsigned int i = 0; i < dim; ++i)
-        {
-          double value = 0.;
-          for (unsigned int c = 0; c < columns.size(); ++c)
-            value += flexibility(s * dim + i, columns[c]) * forces[c];
-          d(flexibility.pairs[s] * dim + i) += value;
-        }
+    if (columns.empty())
+      return {};
+    std::vector<double> value(n_sides * dim, 0.);
+    if (flexibility.compact)
+      return value; // the owner's, from relative_displacement()
+    for (unsigned int r = 0; r < value.size(); ++r)
+      for (unsigned int c = 0; c < columns.size(); ++c)
+        value[r] += flexibility(r, columns[c]) * forces[c];
+    return value;
   }
 
 

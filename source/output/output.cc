@@ -342,9 +342,8 @@ namespace mbfem
     flags.write_higher_order_cells = degree > 1;
     data_out.set_flags(flags);
 
-    std::ostringstream content;
-    data_out.write_vtu(content);
-    write_on_this_rank(parameters.directory + "/" + name, content.str());
+    write_on_this_rank(parameters.directory + "/" + name,
+                       [&](std::ostream &out) { data_out.write_vtu(out); });
     return name;
   }
 
@@ -395,21 +394,44 @@ namespace mbfem
   void
   write_on_this_rank(const std::string &path, const std::string &content)
   {
+    write_on_this_rank(path, [&](std::ostream &out) { out << content; });
+  }
+
+
+
+  void
+  write_on_this_rank(const std::string                         &path,
+                     const std::function<void(std::ostream &)> &write)
+  {
     const std::string temporary = path + ".part";
     std::string       failure;
+    std::error_code   ec;
     {
       std::ofstream out(temporary, std::ios::binary);
       if (!out.good())
         failure = "cannot be created";
       else
         {
-          out << content;
+          try
+            {
+              write(out);
+            }
+          catch (...)
+            {
+              // A writer that met a failed stream (deal.II's ExcIO) says
+              // so below, naming the file; anything else goes on up.
+              if (!out.fail())
+                {
+                  out.close();
+                  std::filesystem::remove(temporary, ec);
+                  throw;
+                }
+            }
           out.close();
           if (out.fail())
             failure = "could not be written whole (is the disk full?)";
         }
     }
-    std::error_code ec;
     if (failure.empty())
       {
         std::filesystem::rename(temporary, path, ec);

@@ -89,9 +89,10 @@ namespace mbfem
      * Computes, on blocks whose flexibility is on demand, the columns
      * H_b(., t f) for every k * dim + f of @p rows (side t of pair k on b)
      * not computed yet: one batch of solves per block. entry(), add_row()
-     * and add_entries() read only computed columns (add_row() computes a
-     * missing one alone, slowly): call this first with the columns they
-     * will read.
+     * and add_entries() read only computed columns, and under mpirun the
+     * ranks other than a block's owner hold them at the rows of the sides
+     * with a computed column only (BlockFlexibility::kept_rows): call this
+     * first with the columns they will read.
      */
     void
     request_columns(const std::vector<unsigned int> &rows) const;
@@ -181,11 +182,32 @@ namespace mbfem
       std::vector<double>                      diagonal;
       mutable std::vector<std::vector<double>> columns;
 
-      /** H_b(r, c); on demand, column c must have been computed. */
+      /**
+       * Under mpirun, on demand: the rows the iteration reads, those of
+       * the sides with a computed column (every direction of such a
+       * side), in the order they came, and each row's place among them
+       * (-1 where not kept). On every rank; the ranks other than the
+       * owner (compact) hold their columns at these rows only, so that no
+       * rank holds the others' columns whole (relative_displacement() has
+       * H_b f from the owner).
+       */
+      mutable std::vector<unsigned int> kept_rows;
+      mutable std::vector<int>          kept_position;
+      bool                              compact = false;
+
+      /**
+       * H_b(r, c); on demand, column c must have been computed, and on a
+       * compact block row r kept.
+       */
       double
       operator()(const unsigned int r, const unsigned int c) const
       {
-        return on_demand ? columns[c][r] : matrix(r, c);
+        if (!on_demand)
+          return matrix(r, c);
+        if (!compact)
+          return columns[c][r];
+        Assert(kept_position[r] >= 0, ExcInternalError());
+        return columns[c][kept_position[r]];
       }
     };
 
@@ -232,12 +254,39 @@ namespace mbfem
                     const std::vector<unsigned int> &columns) const;
 
     /**
-     * Under mpirun, H_b's columns @p columns (computed by compute_columns()
-     * on the block's owner) from there to every rank.
+     * Under mpirun, before new @p columns of an on-demand block are
+     * computed: their sides' rows added to the kept rows, and @p message
+     * sized for share_columns() (room made, so that nothing is allocated
+     * between the ranks' steps). Returns the columns computed before, in
+     * increasing order.
+     */
+    std::vector<unsigned int>
+    keep_rows(const BlockFlexibility          &flexibility,
+              const std::vector<unsigned int> &columns,
+              std::vector<double>             &message) const;
+
+    /**
+     * Under mpirun, H_b's new @p columns (computed by compute_columns() on
+     * the block's owner) at every kept row, and the @p old columns at the
+     * rows keep_rows() added, from the owner to every rank in
+     * @p message.
      */
     void
     share_columns(const BlockFlexibility          &flexibility,
-                  const std::vector<unsigned int> &columns) const;
+                  const std::vector<unsigned int> &columns,
+                  const std::vector<unsigned int> &old,
+                  const unsigned int               n_kept_before,
+                  std::vector<double>             &message) const;
+
+    /**
+     * H_b f of a block at every row of its sides, from its forced columns,
+     * f its sides' forces in @p solution; empty where no side has a force,
+     * zeros on a compact block (the owner's come from
+     * relative_displacement()).
+     */
+    std::vector<double>
+    block_displacement(const BlockFlexibility &flexibility,
+                       const Vector<double>   &solution) const;
 
     /**
      * setup(), per block: the pair sides on @p block (number @p b), and
@@ -320,7 +369,9 @@ namespace mbfem
 
     /**
      * The columns of H_b that sparse_row() reads for the rows of
-     * @p unknowns: every direction of their pairs.
+     * @p unknowns: every direction of their pairs, so that a pair whose
+     * other directions become unknowns later finds its columns there (its
+     * switch replaces its own rows, no new base).
      */
     std::vector<unsigned int>
     sparse_columns(const std::vector<unsigned int> &unknowns) const;
@@ -329,8 +380,10 @@ namespace mbfem
      * Row @p row of the sparse system of assemble_sparse() (columns
      * increasing; rows beyond n_pairs * dim the floating modes'), @p active
      * saying which rows are not x_i = 0. The columns of every pair
-     * direction, open or not, so that a pair that switches changes its own
-     * rows only.
+     * direction, open or not, whose H_b is whole or whose column was
+     * computed (sparse_columns()), so that a pair that switches changes its
+     * own rows only; on demand the columns of pairs never requested are
+     * left out (their x_i = 0).
      */
     UpdatedLU::Row
     sparse_row(const std::vector<PairEquation<dim>> &equations,
