@@ -1100,6 +1100,25 @@ namespace mbfem
   }
 
 
+  namespace
+  {
+    /**
+     * d at the pair directions of a block's sides += @p values (side s,
+     * direction i at s * dim + i; none where empty).
+     */
+    template <int dim, typename Values>
+    void
+    add_at_sides(const std::vector<unsigned int> &pairs,
+                 const Values                    &values,
+                 Vector<double>                  &d)
+    {
+      for (unsigned int r = 0; r < values.size(); ++r)
+        d(pairs[r / dim] * dim + r % dim) += values[r];
+    }
+  } // namespace
+
+
+
   template <int dim>
   Vector<double>
   CondensedSystem<dim>::relative_displacement(const Vector<double> &solution,
@@ -1135,9 +1154,7 @@ namespace mbfem
     Parallel::together(MPI_COMM_WORLD, [&]() {
       for (unsigned int b = 0; b < n_blocks; ++b)
         if (block_flexibility[b].on_demand)
-          {
-            from_owner[b] = block_displacement(block_flexibility[b], solution);
-          }
+          from_owner[b] = block_displacement(block_flexibility[b], solution);
     });
     for (unsigned int b = 0; b < n_blocks; ++b)
       {
@@ -1151,8 +1168,7 @@ namespace mbfem
                             flexibility.owner,
                             from_owner[b].data(),
                             from_owner[b].size());
-        for (unsigned int r = 0; r < from_owner[b].size(); ++r)
-          d(flexibility.pairs[r / dim] * dim + r % dim) += from_owner[b][r];
+        add_at_sides<dim>(flexibility.pairs, from_owner[b], d);
       }
     return d;
   }
@@ -1196,15 +1212,13 @@ namespace mbfem
              &beta,
              value.begin(),
              &one);
-        for (unsigned int s = 0; s < n_sides; ++s)
-          for (unsigned int i = 0; i < dim; ++i)
-            d(flexibility.pairs[s] * dim + i) += value(s * dim + i);
+        add_at_sides<dim>(flexibility.pairs, value, d);
         return;
       }
     // Few forced sides, or columns on demand: the forced columns only.
-    const std::vector<double> value = block_displacement(flexibility, solution);
-    for (unsigned int r = 0; r < value.size(); ++r)
-      d(flexibility.pairs[r / dim] * dim + r % dim) += value[r];
+    add_at_sides<dim>(flexibility.pairs,
+                      block_displacement(flexibility, solution),
+                      d);
   }
 
 
