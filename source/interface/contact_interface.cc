@@ -871,17 +871,15 @@ namespace mbfem
     check_mortar_cross_points(
       blocks, pairs, parameters.interfaces, coincident, pcout);
 
-    // The loops of cross-points are loops of nodes paired one to one; a
-    // mortar pair ties one node to several and stays out of them.
-    const auto first_mortar =
-      std::stable_partition(pairs.begin(), pairs.end(), [&](const auto &pair) {
-        return !parameters.interfaces[pair.interface].mortar;
-      });
-    std::vector<ContactPair<dim>> mortar(first_mortar, pairs.end());
-    pairs.erase(first_mortar, pairs.end());
+    // Node-to-node interfaces first, the mortar ones after them (the order
+    // of the pair files). The loops of cross-points are loops of nodes
+    // paired one to one: node-to-node pairs, and mortar pairs where the
+    // meshes match; a mortar pair that ties one node to several stays out.
+    std::stable_partition(pairs.begin(), pairs.end(), [&](const auto &pair) {
+      return !parameters.interfaces[pair.interface].mortar;
+    });
     const CrossPointReport report =
       resolve_cross_points(pairs, parameters.interfaces);
-    pairs.insert(pairs.end(), mortar.begin(), mortar.end());
     if (report.n_merged > 0)
       pcout << "  " << report.n_points
             << " point(s) shared by three or more blocks: " << report.n_merged

@@ -44,11 +44,24 @@ namespace mbfem
 
 
 
+    /** Whether @p pair ties one node to one node (node-to-node pairs, and
+     * mortar pairs where the meshes match). */
+    template <int dim>
+    bool
+    is_one_to_one(const ContactPair<dim> &pair)
+    {
+      return pair.a.nodes.size() == 1 && pair.b.nodes.size() == 1;
+    }
+
+
+
     /**
      * The pairs that would close a loop of the node graph, in a
-     * deterministic order. @p vertex receives the two vertices of each pair,
-     * @p degree the number of pairs at each vertex, and @p loops one vertex
-     * of each connected group of nodes that has a loop (a cross-point).
+     * deterministic order. The graph's edges are the pairs that tie one
+     * node to one node; a mortar pair that weights several nodes is no
+     * edge. @p vertex receives the two vertices of each edge, @p degree the
+     * number of edges at each vertex, and @p loops one vertex of each
+     * connected group of nodes that has a loop (a cross-point).
      */
     template <int dim>
     std::vector<unsigned int>
@@ -59,26 +72,31 @@ namespace mbfem
     {
       std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int>
         index;
-      vertex.resize(pairs.size());
+      vertex.assign(pairs.size(),
+                    {{numbers::invalid_unsigned_int,
+                      numbers::invalid_unsigned_int}});
+      std::vector<unsigned int> order;
       for (unsigned int k = 0; k < pairs.size(); ++k)
-        for (const int sign : {-1, 1})
+        if (is_one_to_one(pairs[k]))
           {
-            const PairSide<dim> &side = pairs[k].side(sign);
-            Assert(side.nodes.size() == 1, ExcInternalError());
-            const auto [it, inserted] =
-              index.emplace(std::make_pair(side.block, side.nodes[0].dofs[0]),
-                            degree.size());
-            if (inserted)
-              degree.push_back(0);
-            ++degree[it->second];
-            vertex[k][sign < 0 ? 0 : 1] = it->second;
+            order.push_back(k);
+            for (const int sign : {-1, 1})
+              {
+                const PairSide<dim> &side = pairs[k].side(sign);
+                const auto [it, inserted] =
+                  index.emplace(std::make_pair(side.block,
+                                               side.nodes[0].dofs[0]),
+                                degree.size());
+                if (inserted)
+                  degree.push_back(0);
+                ++degree[it->second];
+                vertex[k][sign < 0 ? 0 : 1] = it->second;
+              }
           }
 
       // Kruskal: pairs in the order of their interfaces (then of their
       // creation), so that a loop is closed by the pair of the interface
       // declared last.
-      std::vector<unsigned int> order(pairs.size());
-      std::iota(order.begin(), order.end(), 0u);
       std::stable_sort(order.begin(),
                        order.end(),
                        [&](const unsigned int i, const unsigned int j) {
@@ -97,23 +115,48 @@ namespace mbfem
 
 
     /**
-     * The pair of @p chord's interface and blocks, nearest to it, whose two
-     * nodes are in no other pair; invalid if there is none.
+     * How many pairs weight each node (block, first DoF), on either side.
+     */
+    template <int dim>
+    std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int>
+    pairs_per_node(const std::vector<ContactPair<dim>> &pairs)
+    {
+      std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int>
+        count;
+      for (const auto &pair : pairs)
+        for (const int sign : {-1, 1})
+          for (const auto &node : pair.side(sign).nodes)
+            ++count[{pair.side(sign).block, node.dofs[0]}];
+      return count;
+    }
+
+
+
+    /**
+     * The pair of @p chord's interface and blocks, nearest to it, that ties
+     * one node to one node and whose two nodes are in no other pair (@p
+     * count: pairs per node, mortar pairs of several nodes included);
+     * invalid if there is none. Merged with the chord, its rows then still
+     * involve nodes that no other row does.
      */
     template <int dim>
     unsigned int
-    free_neighbour(const std::vector<ContactPair<dim>>            &pairs,
-                   const unsigned int                              chord,
-                   const std::vector<std::array<unsigned int, 2>> &vertex,
-                   const std::vector<unsigned int>                &degree)
+    free_neighbour(
+      const std::vector<ContactPair<dim>> &pairs,
+      const unsigned int                   chord,
+      const std::map<std::pair<unsigned int, types::global_dof_index>,
+                     unsigned int>        &count)
     {
+      const auto alone = [&](const PairSide<dim> &side) {
+        return count.at({side.block, side.nodes[0].dofs[0]}) == 1;
+      };
       const ContactPair<dim> &c       = pairs[chord];
       unsigned int            best    = numbers::invalid_unsigned_int;
       double                  nearest = std::numeric_limits<double>::max();
       for (unsigned int k = 0; k < pairs.size(); ++k)
         if (pairs[k].interface == c.interface &&
             pairs[k].a.block == c.a.block && pairs[k].b.block == c.b.block &&
-            degree[vertex[k][0]] == 1 && degree[vertex[k][1]] == 1)
+            is_one_to_one(pairs[k]) && alone(pairs[k].a) && alone(pairs[k].b))
           {
             const double distance = (pairs[k].midpoint() - c.midpoint()).norm();
             if (distance < nearest)
@@ -128,8 +171,8 @@ namespace mbfem
 
 
     /**
-     * @p target with the nodes of @p merged added, every node weighted by
-     * its pair's area over the total.
+     * @p target with the nodes of @p merged added, every node's weight
+     * times its pair's area over the total.
      */
     template <int dim>
     void
@@ -152,10 +195,12 @@ namespace mbfem
           side.point = Point<dim>();
           for (const auto *pair : all)
             {
-              const double w    = pair->area / total;
-              auto         node = pair->side(sign).nodes[0];
-              node.weight       = w;
-              side.nodes.push_back(node);
+              const double w = pair->area / total;
+              for (auto node : pair->side(sign).nodes)
+                {
+                  node.weight *= w;
+                  side.nodes.push_back(node);
+                }
               side.point += w * pair->side(sign).point;
             }
         }
@@ -180,11 +225,12 @@ namespace mbfem
     CrossPointReport report;
     if (chords.empty())
       return report;
+    const auto count = pairs_per_node(pairs);
 
     std::map<unsigned int, std::vector<const ContactPair<dim> *>> merged;
     for (const unsigned int c : chords)
       {
-        const unsigned int target = free_neighbour(pairs, c, vertex, degree);
+        const unsigned int target = free_neighbour(pairs, c, count);
         const auto        &chord  = pairs[c];
         AssertThrow(
           target != numbers::invalid_unsigned_int,

@@ -47,20 +47,15 @@ namespace mbfem
 
 
 
-    /** A mortar pair that is one node against one node of weight 1. */
+    /**
+     * A mortar pair that ties one node to one node (the meshes match
+     * there): an edge of the cross-point rule's node graph.
+     */
     template <int dim>
     bool
     is_node_to_node(const ContactPair<dim> &pair)
     {
-      unsigned int n = 0;
-      for (const auto &node : pair.b.nodes)
-        if (std::abs(node.weight) > 1e-10)
-          {
-            if (std::abs(node.weight - 1.) > 1e-8)
-              return false;
-            ++n;
-          }
-      return n == 1;
+      return pair.a.nodes.size() == 1 && pair.b.nodes.size() == 1;
     }
 
 
@@ -119,56 +114,35 @@ namespace mbfem
                 entry.matching = false;
             }
 
-    // A mortar interface on a loop of interfaces at the point: its blocks
-    // are joined there also through the others.
-    std::vector<std::pair<const CrossPoint *, std::string>> singular, close;
+    // A mortar interface on a loop of interfaces at the point (its blocks
+    // are joined there also through the others) where the meshes do not
+    // match: the cross-point rule sees only pairs of one node against one.
+    std::vector<std::pair<const CrossPoint *, std::string>> close;
     for (const auto &[key, entry] : at)
-      for (const auto &[blocks_ab, ks] : entry.interfaces)
-        {
-          const auto mortar = std::find_if(ks.begin(), ks.end(), [&](auto k) {
-            return interfaces[k].mortar;
-          });
-          if (mortar == ks.end())
-            continue;
-          std::set<std::pair<unsigned int, unsigned int>> others;
-          for (const auto &[edge, k] : entry.interfaces)
-            if (edge != blocks_ab)
-              others.insert(edge);
-          if (!joined(others, blocks_ab.first, blocks_ab.second))
-            continue;
-          (entry.matching ? singular : close)
-            .emplace_back(&entry, interfaces[*mortar].description);
-          break;
-        }
+      if (!entry.matching)
+        for (const auto &[blocks_ab, ks] : entry.interfaces)
+          {
+            const auto mortar = std::find_if(ks.begin(), ks.end(), [&](auto k) {
+              return interfaces[k].mortar;
+            });
+            if (mortar == ks.end())
+              continue;
+            std::set<std::pair<unsigned int, unsigned int>> others;
+            for (const auto &[edge, k] : entry.interfaces)
+              if (edge != blocks_ab)
+                others.insert(edge);
+            if (!joined(others, blocks_ab.first, blocks_ab.second))
+              continue;
+            close.emplace_back(&entry, interfaces[*mortar].description);
+            break;
+          }
 
-    // Matching at the point, the mortar pairs are node-to-node pairs
-    // outside the cross-point rule: the same motion is prescribed twice
-    // while they stick (a 2 x 2 bonded square ended with exit 0 and forces
-    // at the joints' strength). Non-matching, the loop's rows are not
-    // exactly dependent, and measured models solved (condensed =
-    // monolithic) but one did not agree: said, not refused.
-    AssertThrow(
-      singular.empty(),
-      ExcMessage("Contact/Interfaces: the mortar interface '" +
-                 (singular.empty() ? std::string() : singular[0].second) +
-                 "' closes a loop of interfaces at (" +
-                 (singular.empty() ? std::string() : singular[0].first->where) +
-                 "), a point where three or more blocks meet" +
-                 (singular.size() > 1 ?
-                    " (and at " + std::to_string(singular.size() - 1) +
-                      " other point(s))" :
-                    std::string()) +
-                 ", and its meshes match there. The cross-point rule that "
-                 "keeps such loops determinate works on node-to-node "
-                 "pairs; as mortar pairs the loop prescribes the same "
-                 "motion twice and the interface system is singular. "
-                 "Declare the interfaces whose meshes match without "
-                 "'mortar'."));
     if (!close.empty())
       pcout << "  " << close.size() << " point(s) where a mortar interface ('"
             << close[0].second << "' at (" << close[0].first->where
             << ")) closes a loop of interfaces of three or more blocks: "
-               "the cross-point rule does not apply to mortar pairs, and the "
+               "the meshes do not match there, so the cross-point rule (which "
+               "takes pairs of one node against one) does not apply, and the "
                "interface system may be nearly singular there; "
                "'Contact/Formulation = both' checks the answer\n";
   }

@@ -53,8 +53,11 @@ namespace mbfem
    *   would forbid;
    * - no force is lost: the merged pair puts its share (its area fraction)
    *   of its force on the cross-point nodes.
-   * Throws if a chord's interface has no such free pair (an interface whose
-   * every node is a cross-point: refine the mesh or raise the degree).
+   * Mortar pairs take part where they tie one node to one node (matching
+   * meshes); a mortar pair that weights several nodes is no edge of the
+   * graph and takes no chord over. Throws if a chord's interface has no such
+   * free pair (an interface whose every node is a cross-point: refine the mesh
+   * or raise the degree).
    */
   template <int dim>
   CrossPointReport

@@ -14,16 +14,13 @@ namespace mbfem
   /**
    * Mortar interfaces on a loop of interfaces at a point where three or
    * more blocks meet (a T- or X-junction whose blocks are joined pairwise
-   * there). The cross-point rule (cross_points.h) that keeps such loops
-   * determinate works on node-to-node pairs. Where the meshes match at the
-   * point, the mortar pairs are node-to-node pairs outside the rule, the
-   * same motion is prescribed twice while they stick and the interface
-   * system is singular (a 2 x 2 square of bonded blocks ended "converged"
-   * with forces of the joints' strength): refused. Non-matching there, the
-   * rows are not exactly dependent (measured models solved, one with the
-   * formulations disagreeing): said on @p pcout. A node counts at a point
-   * where its weight is above 1e-10; points are compared on a grid of
-   * @p coincident.
+   * there). Where the meshes match at the point, the mortar pairs there tie
+   * one node to one node and the cross-point rule (cross_points.h) takes
+   * them like node-to-node pairs. Where they do not, the rule does not
+   * apply and the loop's rows are not exactly dependent (measured models
+   * solved, one with the formulations disagreeing): said on @p pcout. A
+   * node counts at a point where its weight is above 1e-10; points are
+   * compared on a grid of @p coincident.
    */
   template <int dim>
   void
