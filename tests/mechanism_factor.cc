@@ -68,7 +68,10 @@ namespace
         candidates[k].area  = 0.25;
       }
     const std::vector<double> resultant = {0., 0., -1., 0., 0., 0.};
-    return StaticAdmissibility<3>(candidates, coupling, resultant).solve();
+    return StaticAdmissibility<3>(candidates,
+                                  mbfem::CouplingRows(coupling),
+                                  resultant)
+      .solve();
   }
 
   const char *

@@ -55,7 +55,10 @@ namespace rigid_blocks
       }
     // F_e = Phi^T f for the weight at the centre: no moment about it.
     const std::vector<double> resultant = {0., -weight, 0.};
-    return StaticAdmissibility<2>(candidates, coupling, resultant).solve();
+    return StaticAdmissibility<2>(candidates,
+                                  mbfem::CouplingRows(coupling),
+                                  resultant)
+      .solve();
   }
 
 

@@ -71,7 +71,10 @@ namespace
         candidates[k].area  = 0.25;
       }
     const std::vector<double> resultant = {0., 0., -1., 0., 0., 0.};
-    return StaticAdmissibility<3>(candidates, coupling, resultant).solve();
+    return StaticAdmissibility<3>(candidates,
+                                  mbfem::CouplingRows(coupling),
+                                  resultant)
+      .solve();
   }
 
   /** Angle (degrees) between the mechanism's translation and @p d. */

@@ -82,11 +82,11 @@ namespace mbfem
     coupling_rows.assign(n_pairs * dim, {});
     coupling_columns.assign(coupling.n_modes(), {});
     for (unsigned int i = 0; i < n_pairs * dim; ++i)
-      for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-        if (coupling(i, a) != 0.)
+      for (const auto &[a, value] : coupling.row(i))
+        if (value != 0.)
           {
-            coupling_rows[i].emplace_back(a, coupling(i, a));
-            coupling_columns[a].emplace_back(i, coupling(i, a));
+            coupling_rows[i].emplace_back(a, value);
+            coupling_columns[a].emplace_back(i, value);
           }
   }
 
@@ -261,8 +261,8 @@ namespace mbfem
       for (unsigned int d = 0; d < dim; ++d)
         {
           double mobility = 0.;
-          for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-            mobility = std::max(mobility, std::abs(coupling(k * dim + d, a)));
+          for (const auto &[a, value] : coupling.row(k * dim + d))
+            mobility = std::max(mobility, std::abs(value));
           held_directions[k][d] =
             diagonal[k * dim + d] < 1e-12 * max_diagonal && mobility < 1e-12;
         }
@@ -801,17 +801,17 @@ namespace mbfem
                 for (unsigned int j = 0; j < n_rho; ++j)
                   matrix(i, j) +=
                     row_scale * a * entry(source, unknowns[j]) / scale;
-                for (unsigned int b = 0; b < coupling.n_modes(); ++b)
-                  matrix(i, n_rho + b) += row_scale * a * coupling(source, b);
+                for (const auto &[b, value] : coupling.row(source))
+                  matrix(i, n_rho + b) += row_scale * a * value;
               }
             if (eq.force_coefficients[e] != 0. && column_of[k * dim + e] >= 0)
               matrix(i, column_of[k * dim + e]) += eq.force_coefficients[e];
           }
       }
     // Equilibrium of the floating blocks: P^T r = -F_e.
-    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-      for (unsigned int j = 0; j < n_rho; ++j)
-        matrix(n_rho + a, j) = coupling(unknowns[j], a);
+    for (unsigned int j = 0; j < n_rho; ++j)
+      for (const auto &[a, value] : coupling.row(unknowns[j]))
+        matrix(n_rho + a, j) = value;
 
     const double norm = matrix.l1_norm();
     try

@@ -168,8 +168,8 @@ namespace mbfem
       condensed->add_entries(problem.W);
     problem.G.reinit(n_r, coupling.n_modes());
     for (unsigned int i = 0; i < n_r; ++i)
-      for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-        problem.G(i, a) = coupling(i, a);
+      for (const auto &[a, value] : coupling.row(i))
+        problem.G(i, a) = value;
     problem.f = loads.resultant;
     problem.f.resize(coupling.n_modes(), 0.);
 

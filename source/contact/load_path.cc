@@ -553,8 +553,8 @@ namespace mbfem
         Tensor<1, dim> w;
         for (unsigned int e = 1; e < dim; ++e)
           if (!held[k][e])
-            for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-              w[e] += coupling(k * dim + e, a) * motion(a);
+            for (const auto &[a, value] : coupling.row(k * dim + e))
+              w[e] += value * motion(a);
         along[k] = w * trial.slip_direction[k];
         largest  = std::max(largest, w.norm());
       }
@@ -597,8 +597,8 @@ namespace mbfem
       {
         for (unsigned int e = 0; e < dim; ++e)
           if (!held[k][e])
-            for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-              w[k][e] += coupling(k * dim + e, a) * motion(a);
+            for (const auto &[a, value] : coupling.row(k * dim + e))
+              w[k][e] += value * motion(a);
         largest = std::max(largest, w[k].norm());
       }
     for (unsigned int k = 0; k < pairs.size(); ++k)

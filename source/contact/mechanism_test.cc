@@ -165,9 +165,9 @@ namespace mbfem
     for (const unsigned int row : rows)
       {
         entries.clear();
-        for (unsigned int a = 0; a < q; ++a)
-          if (coupling(row, a) != 0.)
-            entries.emplace_back(a, coupling(row, a));
+        for (const auto &[a, value] : coupling.row(row))
+          if (value != 0.)
+            entries.emplace_back(a, value);
         for (const auto &[a, x] : entries)
           for (const auto &[c, y] : entries)
             gram(a, c) += x * y;

@@ -1,5 +1,8 @@
 #include <mbfem/contact/rigid_coupling.h>
 
+#include <array>
+#include <utility>
+
 namespace mbfem
 {
   template <int dim>
@@ -33,38 +36,46 @@ namespace mbfem
                                  blocks[b]->free_rigid_body_modes());
       }
 
-    // P in global axes: a side's displacement is sum_i w_i u(node_i), the
-    // force r_k on block b and -r_k on block a, hence the sign.
-    const unsigned int n_r = pairs.size() * dim;
-    FullMatrix<double> p_global(n_r, total);
-    for (unsigned int b = 0; b < blocks.size(); ++b)
+    // P in global axes, pair by pair: a side's displacement is sum_i w_i
+    // u(node_i), the force r_k on block b and -r_k on block a, hence the
+    // sign; then into the pair's frame. Only the modes of the pair's two
+    // blocks, the block with the lower amplitudes first.
+    p_hat.reinit(total);
+    std::vector<CouplingRows::Entry> row;
+    for (const auto &pair : pairs)
       {
-        const auto &modes = modes_of(b);
-        for (unsigned int k = 0; k < pairs.size() && !modes.empty(); ++k)
-          for (const int sign : {-1, 1})
-            {
-              const auto &side = pairs[k].side(sign);
-              if (side.block != b)
-                continue;
-              for (const auto &node : side.nodes)
-                for (unsigned int a = 0; a < modes.size(); ++a)
-                  for (unsigned int c = 0; c < dim; ++c)
-                    p_global(k * dim + c, first_mode[b] + a) +=
-                      sign * node.weight * modes[a](node.dofs[c]);
-            }
-      }
-
-    // ... and into the pairs' frames.
-    p_hat.reinit(n_r, total);
-    for (unsigned int k = 0; k < pairs.size(); ++k)
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int a = 0; a < total; ++a)
+        std::array<int, 2> signs = {{-1, 1}};
+        if (first_mode[pair.b.block] < first_mode[pair.a.block])
+          std::swap(signs[0], signs[1]);
+        std::vector<std::array<double, dim>> global; // per mode, per axis
+        std::vector<unsigned int>            mode_index;
+        for (const int sign : signs)
           {
-            double value = 0.;
-            for (unsigned int c = 0; c < dim; ++c)
-              value += pairs[k].frame[i][c] * p_global(k * dim + c, a);
-            p_hat(k * dim + i, a) = value;
+            const auto &side  = pair.side(sign);
+            const auto &modes = modes_of(side.block);
+            for (unsigned int a = 0; a < modes.size(); ++a)
+              {
+                std::array<double, dim> p = {};
+                for (const auto &node : side.nodes)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    p[c] += sign * node.weight * modes[a](node.dofs[c]);
+                global.push_back(p);
+                mode_index.push_back(first_mode[side.block] + a);
+              }
           }
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            row.clear();
+            for (unsigned int m = 0; m < global.size(); ++m)
+              {
+                double value = 0.;
+                for (unsigned int c = 0; c < dim; ++c)
+                  value += pair.frame[i][c] * global[m][c];
+                row.emplace_back(mode_index[m], value);
+              }
+            p_hat.add_row(row);
+          }
+      }
   }
 
 

@@ -667,11 +667,11 @@ namespace mbfem
                               }
                             row[entry_of[column]].second += value;
                           });
-        for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-          if (coupling(i, a) != 0.)
+        for (const auto &[a, value] : coupling.row(i))
+          if (value != 0.)
             {
-              row.emplace_back(n_r + a, coupling(i, a));
-              system.coupling_column[a].emplace_back(i, coupling(i, a));
+              row.emplace_back(n_r + a, value);
+              system.coupling_column[a].emplace_back(i, value);
             }
         for (const auto &[column, value] : row)
           entry_of[column] = -1;

@@ -284,9 +284,9 @@ namespace mbfem
       for (unsigned int i = 0; i < dim; ++i)
         start_loads.displacement(k * dim + i) += committed_displacement[k][i];
     start_loads.resultant.assign(coupling.n_modes(), 0.);
-    for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-      for (unsigned int j = 0; j < n_r; ++j)
-        start_loads.resultant[a] -= coupling(j, a) * start(j);
+    for (unsigned int j = 0; j < n_r; ++j)
+      for (const auto &[a, value] : coupling.row(j))
+        start_loads.resultant[a] -= value * start(j);
   }
 
 

@@ -129,8 +129,8 @@ namespace mbfem
   StateCheck<dim>::immobile(const unsigned int k) const
   {
     for (unsigned int d = 0; d < dim; ++d)
-      for (unsigned int a = 0; a < coupling.n_modes(); ++a)
-        if (coupling(k * dim + d, a) != 0.)
+      for (const auto &[a, value] : coupling.row(k * dim + d))
+        if (value != 0.)
           return false;
     return true;
   }

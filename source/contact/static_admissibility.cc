@@ -115,7 +115,7 @@ namespace mbfem
     template <int dim>
     unsigned int
     add_force_columns(LinearProgram               &lp,
-                      const FullMatrix<double>    &coupling,
+                      const CouplingRows          &coupling,
                       const unsigned int           first_row,
                       const bool                   tied,
                       const std::array<bool, dim> &held,
@@ -132,8 +132,8 @@ namespace mbfem
           const unsigned int c = lp.add_column(lower, held[d] ? 0. : inf, 0.);
           if (d == 0)
             first = c;
-          for (unsigned int a = 0; a < coupling.n(); ++a)
-            lp.add(a, c, coupling(first_row + d, a));
+          for (const auto &[a, value] : coupling.row(first_row + d))
+            lp.add(a, c, value);
         }
       return first;
     }
@@ -148,22 +148,23 @@ namespace mbfem
      */
     template <int dim>
     void
-    add_sliding_pair(LinearProgram            &lp,
-                     const FullMatrix<double> &coupling,
-                     const unsigned int        first_row,
-                     const JointLaw           &law,
-                     const double              area,
-                     const bool                broken,
-                     const double              tension,
-                     const Tensor<1, dim>     &slip,
-                     const double              fan)
+    add_sliding_pair(LinearProgram        &lp,
+                     const CouplingRows   &coupling,
+                     const unsigned int    first_row,
+                     const JointLaw       &law,
+                     const double          area,
+                     const bool            broken,
+                     const double          tension,
+                     const Tensor<1, dim> &slip,
+                     const double          fan)
     {
       const double       inf    = COIN_DBL_MAX;
       const unsigned int normal = lp.add_column(-tension, inf, 0.);
       const unsigned int shear  = lp.add_column(0., inf, 0.);
-      for (unsigned int a = 0; a < coupling.n(); ++a)
+      // The rows of one pair have the same amplitudes (its blocks' modes).
+      for (const auto &[a, value] : coupling.row(first_row))
         {
-          lp.add(a, normal, coupling(first_row, a));
+          lp.add(a, normal, value);
           double along = 0.;
           for (unsigned int d = 1; d < dim; ++d)
             along -= coupling(first_row + d, a) * slip[d];
@@ -181,9 +182,10 @@ namespace mbfem
           across[1]               = -slip[2];
           across[2]               = slip[1];
           const unsigned int turn = lp.add_column(-inf, inf, 0.);
-          for (unsigned int a = 0; a < coupling.n(); ++a)
+          for (const auto &entry : coupling.row(first_row))
             {
-              double value = 0.;
+              const unsigned int a     = entry.first;
+              double             value = 0.;
               for (unsigned int d = 1; d < dim; ++d)
                 value += coupling(first_row + d, a) * across[d];
               lp.add(a, turn, value);
@@ -251,7 +253,7 @@ namespace mbfem
   template <int dim>
   StaticAdmissibility<dim>::StaticAdmissibility(
     std::vector<Candidate>     candidates_,
-    const FullMatrix<double>  &coupling_,
+    const CouplingRows        &coupling_,
     const std::vector<double> &external_resultant_,
     const unsigned int         n_facets_)
     : candidates(std::move(candidates_))
@@ -270,8 +272,8 @@ namespace mbfem
       {
         bool touches = false;
         for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int a = 0; a < coupling.n(); ++a)
-            touches = touches || coupling(k * dim + i, a) != 0.;
+          for (const auto &[a, value] : coupling.row(k * dim + i))
+            touches = touches || value != 0.;
         if (touches)
           active.push_back(k);
       }
@@ -434,10 +436,9 @@ namespace mbfem
           w[k * dim] <= mu * tangential * polygon * (1. + 1e-6) + tolerance;
         for (unsigned int d = 0; d < dim; ++d)
           if (rest || (slide && d == 0))
-            for (unsigned int a = 0; a < n_modes; ++a)
-              for (unsigned int b = 0; b < n_modes; ++b)
-                normal(a, b) +=
-                  coupling(k * dim + d, a) * coupling(k * dim + d, b);
+            for (const auto &[a, x] : coupling.row(k * dim + d))
+              for (const auto &[b, y] : coupling.row(k * dim + d))
+                normal(a, b) += x * y;
       }
     // v minus its part in the row space of those rows.
     double scale = 0.;
@@ -490,8 +491,8 @@ namespace mbfem
     std::vector<double> w(candidates.size() * dim, 0.);
     for (const unsigned int k : active)
       for (unsigned int d = 0; d < dim; ++d)
-        for (unsigned int a = 0; a < coupling.n(); ++a)
-          w[k * dim + d] += coupling(k * dim + d, a) * mechanism[a];
+        for (const auto &[a, value] : coupling.row(k * dim + d))
+          w[k * dim + d] += value * mechanism[a];
     return w;
   }
 

@@ -2,9 +2,9 @@
 #define mbfem_contact_rigid_coupling_h
 
 #include <mbfem/block/block.h>
+#include <mbfem/contact/coupling_rows.h>
 #include <mbfem/interface/contact_interface.h>
 
-#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <memory>
@@ -85,8 +85,20 @@ namespace mbfem
       return p_hat(row, a);
     }
 
-    /** P_hat, (pairs x dim) x n_modes(). */
-    const FullMatrix<double> &
+    /**
+     * The amplitudes that pair direction @p row moves with (those of its
+     * pair's floating blocks) and P_hat's values there, amplitudes
+     * ascending. Loops over a row go through these, not over all
+     * amplitudes.
+     */
+    ArrayView<const CouplingRows::Entry>
+    row(const unsigned int row) const
+    {
+      return p_hat.row(row);
+    }
+
+    /** P_hat, (pairs x dim) x n_modes(), by rows. */
+    const CouplingRows &
     matrix() const
     {
       return p_hat;
@@ -106,7 +118,7 @@ namespace mbfem
     unsigned int                             total = 0;
     std::vector<std::string>                 names;
     std::vector<std::vector<Vector<double>>> mode_vectors;
-    FullMatrix<double>                       p_hat;
+    CouplingRows                             p_hat;
   };
 } // namespace mbfem
 

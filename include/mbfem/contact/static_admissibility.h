@@ -1,6 +1,7 @@
 #ifndef mbfem_contact_static_admissibility_h
 #define mbfem_contact_static_admissibility_h
 
+#include <mbfem/contact/coupling_rows.h>
 #include <mbfem/interface/joint_law.h>
 
 #include <deal.II/base/tensor.h>
@@ -154,7 +155,7 @@ namespace mbfem
      * ignored.
      */
     StaticAdmissibility(std::vector<Candidate>     candidates,
-                        const FullMatrix<double>  &coupling,
+                        const CouplingRows        &coupling,
                         const std::vector<double> &external_resultant,
                         const unsigned int         n_facets = 64);
 
@@ -226,7 +227,7 @@ namespace mbfem
     pair_velocities(const std::vector<double> &mechanism) const;
 
     const std::vector<Candidate> candidates;
-    const FullMatrix<double>     coupling;
+    const CouplingRows           coupling;
     const std::vector<double>    external_resultant;
     const unsigned int           n_facets;
     /** Forces are divided by this (the largest |F_e|). */
