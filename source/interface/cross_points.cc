@@ -44,17 +44,6 @@ namespace mbfem
 
 
 
-    /** Whether @p pair ties one node to one node (node-to-node pairs, and
-     * mortar pairs where the meshes match). */
-    template <int dim>
-    bool
-    is_one_to_one(const ContactPair<dim> &pair)
-    {
-      return pair.a.nodes.size() == 1 && pair.b.nodes.size() == 1;
-    }
-
-
-
     /**
      * The pairs that would close a loop of the node graph, in a
      * deterministic order. The graph's edges are the pairs that tie one
@@ -77,16 +66,16 @@ namespace mbfem
                       numbers::invalid_unsigned_int}});
       std::vector<unsigned int> order;
       for (unsigned int k = 0; k < pairs.size(); ++k)
-        if (is_one_to_one(pairs[k]))
+        if (ties_one_node_to_one(pairs[k]))
           {
             order.push_back(k);
             for (const int sign : {-1, 1})
               {
                 const PairSide<dim> &side = pairs[k].side(sign);
-                const auto [it, inserted] =
-                  index.emplace(std::make_pair(side.block,
-                                               side.nodes[0].dofs[0]),
-                                degree.size());
+                const auto [it, inserted] = index.emplace(
+                  std::make_pair(side.block,
+                                 side.nodes[dominant_node(side)].dofs[0]),
+                  degree.size());
                 if (inserted)
                   degree.push_back(0);
                 ++degree[it->second];
@@ -115,48 +104,25 @@ namespace mbfem
 
 
     /**
-     * How many pairs weight each node (block, first DoF), on either side.
-     */
-    template <int dim>
-    std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int>
-    pairs_per_node(const std::vector<ContactPair<dim>> &pairs)
-    {
-      std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int>
-        count;
-      for (const auto &pair : pairs)
-        for (const int sign : {-1, 1})
-          for (const auto &node : pair.side(sign).nodes)
-            ++count[{pair.side(sign).block, node.dofs[0]}];
-      return count;
-    }
-
-
-
-    /**
      * The pair of @p chord's interface and blocks, nearest to it, that ties
-     * one node to one node and whose two nodes are in no other pair (@p
-     * count: pairs per node, mortar pairs of several nodes included);
-     * invalid if there is none. Merged with the chord, its rows then still
-     * involve nodes that no other row does.
+     * one node to one node and whose two nodes are in no other such pair;
+     * invalid if there is none.
      */
     template <int dim>
     unsigned int
-    free_neighbour(
-      const std::vector<ContactPair<dim>> &pairs,
-      const unsigned int                   chord,
-      const std::map<std::pair<unsigned int, types::global_dof_index>,
-                     unsigned int>        &count)
+    free_neighbour(const std::vector<ContactPair<dim>>            &pairs,
+                   const unsigned int                              chord,
+                   const std::vector<std::array<unsigned int, 2>> &vertex,
+                   const std::vector<unsigned int>                &degree)
     {
-      const auto alone = [&](const PairSide<dim> &side) {
-        return count.at({side.block, side.nodes[0].dofs[0]}) == 1;
-      };
       const ContactPair<dim> &c       = pairs[chord];
       unsigned int            best    = numbers::invalid_unsigned_int;
       double                  nearest = std::numeric_limits<double>::max();
       for (unsigned int k = 0; k < pairs.size(); ++k)
         if (pairs[k].interface == c.interface &&
             pairs[k].a.block == c.a.block && pairs[k].b.block == c.b.block &&
-            is_one_to_one(pairs[k]) && alone(pairs[k].a) && alone(pairs[k].b))
+            vertex[k][0] != numbers::invalid_unsigned_int &&
+            degree[vertex[k][0]] == 1 && degree[vertex[k][1]] == 1)
           {
             const double distance = (pairs[k].midpoint() - c.midpoint()).norm();
             if (distance < nearest)
@@ -212,6 +178,36 @@ namespace mbfem
 
 
   template <int dim>
+  unsigned int
+  dominant_node(const PairSide<dim> &side)
+  {
+    double largest = 0.;
+    for (const auto &node : side.nodes)
+      largest = std::max(largest, std::abs(node.weight));
+    unsigned int dominant = numbers::invalid_unsigned_int;
+    for (unsigned int i = 0; i < side.nodes.size(); ++i)
+      if (std::abs(side.nodes[i].weight) > 1e-8 * largest)
+        {
+          if (dominant != numbers::invalid_unsigned_int)
+            return numbers::invalid_unsigned_int;
+          dominant = i;
+        }
+    return dominant;
+  }
+
+
+
+  template <int dim>
+  bool
+  ties_one_node_to_one(const ContactPair<dim> &pair)
+  {
+    return dominant_node(pair.a) != numbers::invalid_unsigned_int &&
+           dominant_node(pair.b) != numbers::invalid_unsigned_int;
+  }
+
+
+
+  template <int dim>
   CrossPointReport
   resolve_cross_points(std::vector<ContactPair<dim>>           &pairs,
                        const std::vector<InterfaceDeclaration> &interfaces)
@@ -225,12 +221,11 @@ namespace mbfem
     CrossPointReport report;
     if (chords.empty())
       return report;
-    const auto count = pairs_per_node(pairs);
 
     std::map<unsigned int, std::vector<const ContactPair<dim> *>> merged;
     for (const unsigned int c : chords)
       {
-        const unsigned int target = free_neighbour(pairs, c, count);
+        const unsigned int target = free_neighbour(pairs, c, vertex, degree);
         const auto        &chord  = pairs[c];
         AssertThrow(
           target != numbers::invalid_unsigned_int,
@@ -242,8 +237,14 @@ namespace mbfem
                         std::string()) +
             "), a point shared by three or more blocks, close a loop, and "
             "this interface has no node outside such points to take the "
-            "pair over (see doc/jointed_rock.md). Refine the mesh ('Mesh/"
-            "Initial global refinement') or raise the polynomial degree."));
+            "pair over (see doc/jointed_rock.md). " +
+            (interfaces[chord.interface].mortar ?
+               std::string(
+                 "Its mortar pairs there weight several nodes; with "
+                 "'Contact/Mortar side = finer' choose 'coarser', else "
+                 "refine the mesh or raise the polynomial degree.") :
+               std::string("Refine the mesh ('Mesh/Initial global "
+                           "refinement') or raise the polynomial degree."))));
         merged[target].push_back(&chord);
       }
     for (const auto &[target, chords_of_target] : merged)
@@ -266,6 +267,14 @@ namespace mbfem
 
 
 
+  template unsigned int
+  dominant_node(const PairSide<2> &);
+  template unsigned int
+  dominant_node(const PairSide<3> &);
+  template bool
+  ties_one_node_to_one(const ContactPair<2> &);
+  template bool
+  ties_one_node_to_one(const ContactPair<3> &);
   template CrossPointReport
   resolve_cross_points(std::vector<ContactPair<2>> &,
                        const std::vector<InterfaceDeclaration> &);

@@ -1,3 +1,4 @@
+#include <mbfem/interface/cross_points.h>
 #include <mbfem/interface/mortar_cross_points.h>
 
 #include <algorithm>
@@ -47,27 +48,17 @@ namespace mbfem
 
 
 
-    /**
-     * A mortar pair that ties one node to one node (the meshes match
-     * there): an edge of the cross-point rule's node graph.
-     */
-    template <int dim>
-    bool
-    is_node_to_node(const ContactPair<dim> &pair)
-    {
-      return pair.a.nodes.size() == 1 && pair.b.nodes.size() == 1;
-    }
-
-
-
     /** At one point: the interfaces joining its blocks, by block pair. */
     struct CrossPoint
     {
       std::string where;
       std::map<std::pair<unsigned int, unsigned int>, std::set<unsigned int>>
         interfaces;
-      /** Every mortar pair with a node here ties one node to one node. */
-      bool matching = true;
+      /**
+       * The mortar interfaces with a pair here that weights several nodes
+       * (the meshes do not match): the cross-point rule does not take it.
+       */
+      std::set<unsigned int> several;
     };
   } // namespace
 
@@ -99,7 +90,7 @@ namespace mbfem
     for (const auto &pair : pairs)
       for (const PairSide<dim> *side : {&pair.a, &pair.b})
         for (const auto &node : side->nodes)
-          if (std::abs(node.weight) > 1e-10)
+          if (std::abs(node.weight) > 1e-8)
             {
               const Point<dim>  &x     = points(side->block)[node.dofs[0]];
               CrossPoint        &entry = at[point_key(x, h)];
@@ -110,41 +101,43 @@ namespace mbfem
                 .interfaces[{std::min(pair.a.block, pair.b.block),
                              std::max(pair.a.block, pair.b.block)}]
                 .insert(pair.interface);
-              if (interfaces[pair.interface].mortar && !is_node_to_node(pair))
-                entry.matching = false;
+              if (interfaces[pair.interface].mortar &&
+                  !ties_one_node_to_one(pair))
+                entry.several.insert(pair.interface);
             }
 
-    // A mortar interface on a loop of interfaces at the point (its blocks
-    // are joined there also through the others) where the meshes do not
-    // match: the cross-point rule sees only pairs of one node against one.
+    // A mortar interface whose pairs at the point weight several nodes, on
+    // a loop of interfaces there (its blocks are joined there also through
+    // the others): the cross-point rule, which takes pairs of one node
+    // against one, leaves that loop as it is.
     std::vector<std::pair<const CrossPoint *, std::string>> close;
     for (const auto &[key, entry] : at)
-      if (!entry.matching)
-        for (const auto &[blocks_ab, ks] : entry.interfaces)
-          {
-            const auto mortar = std::find_if(ks.begin(), ks.end(), [&](auto k) {
-              return interfaces[k].mortar;
-            });
-            if (mortar == ks.end())
-              continue;
-            std::set<std::pair<unsigned int, unsigned int>> others;
-            for (const auto &[edge, k] : entry.interfaces)
-              if (edge != blocks_ab)
-                others.insert(edge);
-            if (!joined(others, blocks_ab.first, blocks_ab.second))
-              continue;
-            close.emplace_back(&entry, interfaces[*mortar].description);
-            break;
-          }
+      for (const auto &[blocks_ab, ks] : entry.interfaces)
+        {
+          const auto mortar = std::find_if(ks.begin(), ks.end(), [&](auto k) {
+            return entry.several.count(k) > 0;
+          });
+          if (mortar == ks.end())
+            continue;
+          std::set<std::pair<unsigned int, unsigned int>> others;
+          for (const auto &[edge, k] : entry.interfaces)
+            if (edge != blocks_ab)
+              others.insert(edge);
+          if (!joined(others, blocks_ab.first, blocks_ab.second))
+            continue;
+          close.emplace_back(&entry, interfaces[*mortar].description);
+          break;
+        }
 
     if (!close.empty())
       pcout << "  " << close.size() << " point(s) where a mortar interface ('"
             << close[0].second << "' at (" << close[0].first->where
-            << ")) closes a loop of interfaces of three or more blocks: "
-               "the meshes do not match there, so the cross-point rule (which "
-               "takes pairs of one node against one) does not apply, and the "
-               "interface system may be nearly singular there; "
-               "'Contact/Formulation = both' checks the answer\n";
+            << ")) closes a loop of interfaces of three or more blocks with "
+               "pairs that weight several nodes (the meshes do not match "
+               "there): the cross-point rule takes pairs of one node against "
+               "one only, so that loop stays, and the interface system may "
+               "be nearly singular there; 'Contact/Formulation = both' checks "
+               "the answer\n";
   }
 
 

@@ -54,11 +54,30 @@ namespace mbfem
    * - no force is lost: the merged pair puts its share (its area fraction)
    *   of its force on the cross-point nodes.
    * Mortar pairs take part where they tie one node to one node (matching
-   * meshes); a mortar pair that weights several nodes is no edge of the
-   * graph and takes no chord over. Throws if a chord's interface has no such
-   * free pair (an interface whose every node is a cross-point: refine the mesh
-   * or raise the degree).
+   * meshes: ties_one_node_to_one()); a mortar pair that weights several
+   * nodes is no edge of the graph and takes no chord over. Throws if a chord's
+   * interface has no such free pair (an interface whose every node is a
+   * cross-point: refine the mesh or raise the degree).
    */
+  /**
+   * The index of the one node of @p side whose weight is above 1e-8 of its
+   * largest, invalid if there are several. A mortar pair of meshes that
+   * match at its node has one: the others' weights are round-off of the
+   * mortar integrals (meshes written by gmsh match to some 1e-12).
+   */
+  template <int dim>
+  unsigned int
+  dominant_node(const PairSide<dim> &side);
+
+  /**
+   * Whether @p pair ties one node to one node (dominant_node() on both
+   * sides): every node-to-node pair, and mortar pairs where the meshes
+   * match. These are the edges of the cross-point rule's node graph.
+   */
+  template <int dim>
+  bool
+  ties_one_node_to_one(const ContactPair<dim> &pair);
+
   template <int dim>
   CrossPointReport
   resolve_cross_points(std::vector<ContactPair<dim>>           &pairs,
