@@ -186,7 +186,7 @@ namespace mbfem
       largest = std::max(largest, std::abs(node.weight));
     unsigned int dominant = numbers::invalid_unsigned_int;
     for (unsigned int i = 0; i < side.nodes.size(); ++i)
-      if (std::abs(side.nodes[i].weight) > 1e-8 * largest)
+      if (std::abs(side.nodes[i].weight) > 1e-6 * largest)
         {
           if (dominant != numbers::invalid_unsigned_int)
             return numbers::invalid_unsigned_int;

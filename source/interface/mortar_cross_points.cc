@@ -90,7 +90,7 @@ namespace mbfem
     for (const auto &pair : pairs)
       for (const PairSide<dim> *side : {&pair.a, &pair.b})
         for (const auto &node : side->nodes)
-          if (std::abs(node.weight) > 1e-8)
+          if (std::abs(node.weight) > 1e-6)
             {
               const Point<dim>  &x     = points(side->block)[node.dofs[0]];
               CrossPoint        &entry = at[point_key(x, h)];

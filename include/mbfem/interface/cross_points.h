@@ -60,10 +60,12 @@ namespace mbfem
    * cross-point: refine the mesh or raise the degree).
    */
   /**
-   * The index of the one node of @p side whose weight is above 1e-8 of its
+   * The index of the one node of @p side whose weight is above 1e-6 of its
    * largest, invalid if there are several. A mortar pair of meshes that
    * match at its node has one: the others' weights are round-off of the
-   * mortar integrals (meshes written by gmsh match to some 1e-12).
+   * mortar integrals (meshes written by gmsh match to some 1e-12), or of a
+   * gap of some 1e-7 of the cells (doc/mortar.md). Merging a chord into
+   * such a pair is safe: its rows keep their small weights.
    */
   template <int dim>
   unsigned int

@@ -21,7 +21,7 @@ namespace mbfem
    * are not exactly dependent (measured models solved, one with the
    * formulations disagreeing): said on @p pcout, naming the first such
    * interface and point. A node counts at a point where its weight is
-   * above 1e-8; points are compared on a grid of @p coincident.
+   * above 1e-6; points are compared on a grid of @p coincident.
    */
   template <int dim>
   void
