@@ -39,7 +39,9 @@ namespace mbfem
     // P in global axes, pair by pair: a side's displacement is sum_i w_i
     // u(node_i), the force r_k on block b and -r_k on block a, hence the
     // sign; then into the pair's frame. Only the modes of the pair's two
-    // blocks, the block with the lower amplitudes first.
+    // blocks, the block with the lower amplitudes first. A pair whose two
+    // sides are on one block (the arms of a U facing each other) gets one
+    // entry per mode, the two sides' sums added, as a dense P_hat had.
     p_hat.reinit(total);
     std::vector<CouplingRows::Entry> row;
     for (const auto &pair : pairs)
@@ -47,6 +49,7 @@ namespace mbfem
         std::array<int, 2> signs = {{-1, 1}};
         if (first_mode[pair.b.block] < first_mode[pair.a.block])
           std::swap(signs[0], signs[1]);
+        const bool one_block = (pair.a.block == pair.b.block);
         std::vector<std::array<double, dim>> global; // per mode, per axis
         std::vector<unsigned int>            mode_index;
         for (const int sign : signs)
@@ -55,12 +58,17 @@ namespace mbfem
             const auto &modes = modes_of(side.block);
             for (unsigned int a = 0; a < modes.size(); ++a)
               {
-                std::array<double, dim> p = {};
+                const bool again = one_block && sign == signs[1];
+                if (!again)
+                  {
+                    global.push_back({});
+                    mode_index.push_back(first_mode[side.block] + a);
+                  }
+                std::array<double, dim> &p =
+                  global[again ? a : global.size() - 1];
                 for (const auto &node : side.nodes)
                   for (unsigned int c = 0; c < dim; ++c)
                     p[c] += sign * node.weight * modes[a](node.dofs[c]);
-                global.push_back(p);
-                mode_index.push_back(first_mode[side.block] + a);
               }
           }
         for (unsigned int i = 0; i < dim; ++i)
