@@ -8,7 +8,12 @@
 # faces match only to round-off, as gmsh writes separately meshed curves.
 #
 #   python3 meshes/square_2x2_shifted.py meshes/square_2x2_shifted.msh 1e-10 0
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gmsh_v2
+
 out, dx, dy = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
 blocks = [  # material, x0, y0, nx, ny, shift
   (1, 0., 0., 4, 1, (0, 0)),
@@ -48,11 +53,4 @@ for mat, x0, y0, nx, ny, (sx, sy) in blocks:
     for j in range(ny):
         elems.append((1, faceid(mat, 'l', x0, y0 + (j + .5) * h), [nid(0, j + 1), nid(0, j)]))
         elems.append((1, faceid(mat, 'r', x0 + nx * h, y0 + (j + .5) * h), [nid(nx, j), nid(nx, j + 1)]))
-with open(out, 'w') as f:
-    f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n" % len(nodes))
-    for k, (x, y) in enumerate(nodes):
-        f.write("%d %.17g %.17g 0\n" % (k + 1, x, y))
-    f.write("$EndNodes\n$Elements\n%d\n" % len(elems))
-    for k, (t, tag, ns) in enumerate(elems):
-        f.write("%d %d 2 %d %d %s\n" % (k + 1, t, tag, tag, " ".join(map(str, ns))))
-    f.write("$EndElements\n")
+gmsh_v2.write(out, nodes, elems)

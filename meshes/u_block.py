@@ -6,7 +6,12 @@
 # U's bottom, 11 and 12 its outer sides.
 #
 #   python3 meshes/u_block.py meshes/u_block.msh
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gmsh_v2
+
 out = sys.argv[1]
 xs = [0., .5, .99, 1.01, 1.5, 2.]
 nodes, elems = [], []
@@ -41,11 +46,4 @@ def u_id(s, i, j):
     return 20
 cells = [(i, 0) for i in range(5)] + [(i, j) for j in (1, 2) for i in (0, 1, 3, 4)]
 grid([.5, 1., 1.5, 2.], cells, 2, u_id)
-with open(out, 'w') as f:
-    f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n" % len(nodes))
-    for k, (x, y) in enumerate(nodes):
-        f.write("%d %.17g %.17g 0\n" % (k + 1, x, y))
-    f.write("$EndNodes\n$Elements\n%d\n" % len(elems))
-    for k, (t, tag, ns) in enumerate(elems):
-        f.write("%d %d 2 %d %d %s\n" % (k + 1, t, tag, tag, " ".join(map(str, ns))))
-    f.write("$EndElements\n")
+gmsh_v2.write(out, nodes, elems)
