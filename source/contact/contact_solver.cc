@@ -186,6 +186,7 @@ namespace mbfem
     coupling.setup(blocks, contact_pairs);
     system->setup(blocks);
     held = system->held();
+    setup_statics(blocks);
   }
 
 
@@ -200,6 +201,7 @@ namespace mbfem
     coupling.setup(blocks, contact_pairs, present);
     system->setup(blocks);
     held = system->held();
+    setup_statics(blocks);
   }
 
 
@@ -607,23 +609,58 @@ namespace mbfem
 
 
   template <int dim>
+  void
+  ContactSolver<dim>::setup_statics(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks)
+  {
+    statics_owner.clear();
+    statics_areas.clear();
+    std::vector<ContactPair<dim>> split;
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      {
+        const auto &pair = contact_pairs[k];
+        for (const auto &one : pair.cross_point_pairs.empty() ?
+                                 std::vector<ContactPair<dim>>{pair} :
+                                 pair.cross_point_pairs)
+          {
+            statics_owner.push_back(k);
+            statics_areas.push_back(one.area);
+            split.push_back(one);
+          }
+      }
+    statics_rows.reset();
+    if (split.size() > n_pairs)
+      statics_rows =
+        std::make_unique<CouplingRows>(coupling.rows_of(blocks, split));
+  }
+
+
+
+  template <int dim>
   StaticAdmissibility<dim>
   ContactSolver<dim>::statics(const std::vector<bool> &broken) const
   {
-    using Certificate = StaticAdmissibility<dim>;
-    std::vector<typename Certificate::Candidate> candidates(n_pairs);
-    for (unsigned int k = 0; k < n_pairs; ++k)
+    // Every node-to-node pair a merged pair stands for at a point of three
+    // or more blocks is a candidate of its own (ContactPair::
+    // cross_point_pairs), with the merged pair's law (strength reduction
+    // divides it), broken flag and held directions.
+    using Certificate        = StaticAdmissibility<dim>;
+    const CouplingRows &rows = statics_rows ? *statics_rows : coupling.matrix();
+    std::vector<typename Certificate::Candidate> candidates(
+      statics_owner.size());
+    for (unsigned int i = 0; i < statics_owner.size(); ++i)
       {
-        candidates[k].joint  = contact_pairs[k].joint;
-        candidates[k].area   = contact_pairs[k].area;
-        candidates[k].broken = broken[k];
-        candidates[k].tied   = contact_pairs[k].tied;
+        const unsigned int k = statics_owner[i];
+        candidates[i].joint  = contact_pairs[k].joint;
+        candidates[i].area   = statics_areas[i];
+        candidates[i].broken = broken[k];
+        candidates[i].tied   = contact_pairs[k].tied;
         if (k < held.size())
-          candidates[k].held = held[k];
+          candidates[i].held = held[k];
       }
     std::vector<double> resultant = loads.resultant;
     resultant.resize(coupling.n_modes(), 0.);
-    return Certificate(std::move(candidates), coupling.matrix(), resultant);
+    return Certificate(std::move(candidates), rows, resultant);
   }
 
 

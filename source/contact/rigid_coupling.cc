@@ -36,13 +36,30 @@ namespace mbfem
                                  blocks[b]->free_rigid_body_modes());
       }
 
+    p_hat = rows_of(blocks, pairs);
+  }
+
+
+
+  template <int dim>
+  CouplingRows
+  RigidCoupling<dim>::rows_of(
+    const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+    const std::vector<ContactPair<dim>>            &pairs) const
+  {
+    const auto modes_of =
+      [&](const unsigned int b) -> const std::vector<Vector<double>> & {
+      static const std::vector<Vector<double>> none;
+      return block_modes[b] > 0 ? blocks[b]->floating_modes() : none;
+    };
     // P in global axes, pair by pair: a side's displacement is sum_i w_i
     // u(node_i), the force r_k on block b and -r_k on block a, hence the
     // sign; then into the pair's frame. Only the modes of the pair's two
     // blocks, the block with the lower amplitudes first. A pair whose two
     // sides are on one block (the arms of a U facing each other) gets one
     // entry per mode, the two sides' sums added, as a dense P_hat had.
-    p_hat.reinit(total);
+    CouplingRows rows;
+    rows.reinit(total);
     std::vector<CouplingRows::Entry> row;
     for (const auto &pair : pairs)
       {
@@ -81,9 +98,10 @@ namespace mbfem
                   value += pair.frame[i][c] * global[m][c];
                 row.emplace_back(mode_index[m], value);
               }
-            p_hat.add_row(row);
+            rows.add_row(row);
           }
       }
+    return rows;
   }
 
 

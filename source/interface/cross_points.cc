@@ -149,6 +149,8 @@ namespace mbfem
       ContactPair<dim>                      original = target;
       all[0]                                         = &original;
       all.insert(all.end(), merged.begin(), merged.end());
+      for (const auto *pair : all)
+        target.cross_point_pairs.push_back(*pair);
       double total = 0.;
       for (const auto *pair : all)
         total += pair->area;

@@ -576,6 +576,19 @@ namespace mbfem
     StaticAdmissibility<dim>
     statics(const std::vector<bool> &broken) const;
 
+    /**
+     * setup(): the statics certificate's candidates, the pairs with each
+     * merged pair of a cross-point split into the node-to-node pairs it
+     * stands for (ContactPair::cross_point_pairs): which pair each
+     * candidate belongs to, its area, and its rows of P_hat (null where no
+     * pair is split: the coupling's own rows serve).
+     */
+    void
+    setup_statics(const std::vector<std::unique_ptr<Block<dim>>> &blocks);
+    std::vector<unsigned int>     statics_owner;
+    std::vector<double>           statics_areas;
+    std::unique_ptr<CouplingRows> statics_rows;
+
     /** statics(@p broken) solved, with its verdict in words. */
     typename StaticAdmissibility<dim>::Result
     certify_with(const std::vector<bool> &broken,

@@ -105,6 +105,16 @@ namespace mbfem
     }
 
     /**
+     * P_hat's rows for @p pairs (pair by pair, normal then tangents) with
+     * the modes numbered as setup() numbered them: the statics
+     * certificate's rows of the node-to-node pairs that a merged pair
+     * stands for at a cross-point (ContactPair::cross_point_pairs).
+     */
+    CouplingRows
+    rows_of(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+            const std::vector<ContactPair<dim>>            &pairs) const;
+
+    /**
      * F_e: the resultant of each block's external load on each of its free
      * modes, per amplitude (after every block's assemble_load()).
      */

@@ -183,6 +183,16 @@ namespace mbfem
      * geostatic state in equilibrium.
      */
     bool tied = false;
+    /**
+     * A pair into which resolve_cross_points() merged the pairs closing a
+     * loop at a point of three or more blocks: the node-to-node pairs it
+     * stands for, itself as it was found first, then those merged into it.
+     * Empty for every other pair. The elastic model needs the merged pair
+     * (its rows independent); rigid-block statics needs each of these, for
+     * a force at the point itself is a force the blocks can exchange
+     * there (the certificate, ContactSolver::statics()).
+     */
+    std::vector<ContactPair<dim>> cross_point_pairs;
 
     /** Side a (@p sign < 0, force -r) or side b (@p sign > 0, force r). */
     const PairSide<dim> &

@@ -52,7 +52,15 @@ namespace mbfem
    *   methods do), so it can open or slip there, which dropping the pair
    *   would forbid;
    * - no force is lost: the merged pair puts its share (its area fraction)
-   *   of its force on the cross-point nodes.
+   *   of its force on the cross-point nodes;
+   * - rigid-block statics keeps every pair: the merged pair remembers the
+   *   node-to-node pairs it stands for (ContactPair::cross_point_pairs),
+   *   and the statics certificate takes each as a candidate of its own
+   *   (ContactSolver::statics()). A rigid-block LP has no use for
+   *   independent rows, and the merged pair alone would tie the force
+   *   across the chord's interface at the point to a fixed share at its
+   *   neighbour: the pivot of a toppling block, where that force must act
+   *   alone (issue 65: 0.9625 instead of 1.0526).
    * Mortar pairs take part where they tie one node to one node (matching
    * meshes: ties_one_node_to_one()); a mortar pair that weights several
    * nodes is no edge of the graph and takes no chord over. Throws if a chord's
