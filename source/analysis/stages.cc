@@ -8,6 +8,9 @@
 #include <deal.II/base/types.h>
 
 #include <algorithm>
+#include <iomanip>
+#include <numeric>
+#include <sstream>
 #include <string>
 
 namespace mbfem
@@ -357,45 +360,100 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /**
+     * check_configuration_held()'s refusal of block @p block in stage
+     * @p stage, whose group of @p n_members blocks (@p names) keeps the
+     * rigid motions @p free (about @p centre).
+     */
+    template <int dim>
+    std::string
+    unheld_message(const std::string                 &block,
+                   const std::string                 &stage,
+                   const std::vector<Vector<double>> &free,
+                   const Point<dim>                  &centre,
+                   const unsigned int                 n_members,
+                   const std::string                 &names)
+    {
+      std::ostringstream text;
+      text << block << " is not held in stage " << stage
+           << ": it has free rigid-body modes, and no chain of pairs there "
+              "links it to a supported block";
+      if (n_members == 1)
+        text << "; its own supports leave ";
+      else
+        text << "; nor do the supports of the group its pairs link it into ("
+             << names << ") hold it together: as one body the group keeps ";
+      text << free.size() << " rigid motion(s) free,";
+      bool rotates = false;
+      for (const auto &motion : free)
+        {
+          text << " [" << Block<dim>::describe_rigid_body_mode(motion) << "]";
+          for (unsigned int a = dim; a < motion.size(); ++a)
+            rotates |= (motion(a) != 0.);
+        }
+      if (rotates)
+        text << " (rotations about (" << std::setprecision(6) << centre << "))";
+      text << ". A block is held by its pairs only from the stage that adds "
+              "it or switches their interface on, until the stage that "
+              "removes it or its neighbour.";
+      return text.str();
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   MultiBodyProblem<dim>::check_configuration_held(
     const std::vector<ContactPair<dim>> &pairs,
     const Configuration                 &configuration) const
   {
-    // Every floating block there must reach a supported block through the
-    // pairs of the configuration (a stage that removes a block removes its
-    // pairs, one that adds it or switches an interface on brings them).
-    const unsigned int n = blocks.size();
-    std::vector<bool>  held(n, false);
-    for (unsigned int b = 0; b < n; ++b)
-      held[b] =
-        configuration.present[b] && blocks[b]->free_rigid_body_modes().empty();
-    for (bool grown = true; grown;)
-      {
-        grown = false;
-        for (const unsigned int k : configuration.pairs)
-          {
-            const unsigned int a = pairs[k].a.block, b = pairs[k].b.block;
-            if (held[a] != held[b])
-              held[a] = held[b] = grown = true;
-          }
-      }
+    // The blocks there linked by its pairs form groups (a stage that removes
+    // a block removes its pairs, one that adds it or switches an interface
+    // on brings them). A group is held when its supports together leave it
+    // no rigid motion as one body: a supported block in it, or rollers on
+    // different blocks that hold different directions (issue 66).
+    const unsigned int        n = blocks.size();
+    std::vector<unsigned int> group(n);
+    std::iota(group.begin(), group.end(), 0u);
+    const auto root = [&](unsigned int b) {
+      while (group[b] != b)
+        b = group[b] = group[group[b]];
+      return b;
+    };
+    for (const unsigned int k : configuration.pairs)
+      group[root(pairs[k].a.block)] = root(pairs[k].b.block);
+
     const LoadHistory &history = parameters.load_history;
     const std::string  stage =
       history.stages.empty() ?
          std::string("(the only one)") :
          quoted(history.stages[configuration.first_stage].name);
+    std::vector<bool> checked(n, false);
     for (unsigned int b = 0; b < n; ++b)
-      AssertThrow(!configuration.present[b] || held[b],
-                  ExcMessage(blocks[b]->name() + " is not held in stage " +
-                             stage +
-                             ": it has free rigid-body modes, and no chain "
-                             "of pairs there links it to a supported block "
-                             "(a block is held by its pairs only from the "
-                             "stage that adds it or switches their interface "
-                             "on, until the stage that removes it or its "
-                             "neighbour)."));
+      {
+        if (!configuration.present[b] || checked[root(b)])
+          continue;
+        checked[root(b)] = true;
+        std::vector<const FloatingModes<dim> *> members;
+        std::string                             names;
+        for (unsigned int c = 0; c < n; ++c)
+          if (configuration.present[c] && root(c) == root(b))
+            {
+              members.push_back(&blocks[c]->get_floating_modes());
+              names += (names.empty() ? "" : ", ") + blocks[c]->name();
+            }
+        Point<dim> centre;
+        double     size = 0.;
+        const auto free =
+          FloatingModes<dim>::free_group_motions(members, centre, size);
+        AssertThrow(
+          free.empty(),
+          ExcMessage(unheld_message(
+            blocks[b]->name(), stage, free, centre, members.size(), names)));
+      }
   }
 
 

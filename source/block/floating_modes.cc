@@ -6,6 +6,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace mbfem
@@ -19,7 +20,7 @@ namespace mbfem
     const std::string               &block_name)
   {
     const std::vector<Vector<double>> all =
-      rigid_body_modes(dof_handler, mapping);
+      rigid_body_modes(dof_handler, mapping, &mode_centre, &mode_size);
     free_coefficients = free_combinations(all, physical_constraints);
     free_modes.clear();
     for (const auto &coefficients : free_coefficients)
@@ -57,6 +58,24 @@ namespace mbfem
   FloatingModes<dim>::pins() const
   {
     return pinned;
+  }
+
+
+
+  template <int dim>
+  const Point<dim> &
+  FloatingModes<dim>::centre() const
+  {
+    return mode_centre;
+  }
+
+
+
+  template <int dim>
+  double
+  FloatingModes<dim>::size() const
+  {
+    return mode_size;
   }
 
 
@@ -110,7 +129,9 @@ namespace mbfem
   template <int dim>
   std::vector<Vector<double>>
   FloatingModes<dim>::rigid_body_modes(const DoFHandler<dim> &dof_handler,
-                                       const Mapping<dim>    &mapping)
+                                       const Mapping<dim>    &mapping,
+                                       Point<dim>            *centre_out,
+                                       double                *size_out)
   {
     const auto             &fe = dof_handler.get_fe();
     std::vector<Point<dim>> points(dof_handler.n_dofs());
@@ -130,6 +151,10 @@ namespace mbfem
     for (const auto &p : points)
       centre += p / static_cast<double>(points.size());
     const double size = diameter(dof_handler.get_triangulation());
+    if (centre_out != nullptr)
+      *centre_out = centre;
+    if (size_out != nullptr)
+      *size_out = size;
 
     const unsigned int          n_modes = (dim == 2 ? 3 : 6);
     std::vector<Vector<double>> modes(n_modes, Vector<double>(points.size()));
@@ -189,14 +214,23 @@ namespace mbfem
       -1., 1e-10, 1e-14, eigenvalues, eigenvectors);
 
     // The null space has no preferred basis (LAPACK may return any
-    // rotation of it); reduced row-echelon form makes it unique and
-    // readable: "translation x", not "0.71 translation x + 0.71 ...".
+    // rotation of it): row_echelon() makes it unique and readable.
     const unsigned int n_free = eigenvalues.size();
     FullMatrix<double> basis(n_free, n_modes);
     for (unsigned int k = 0; k < n_free; ++k)
       for (unsigned int a = 0; a < n_modes; ++a)
         basis(k, a) = eigenvectors(a, k);
-    unsigned int row = 0;
+    return row_echelon(basis);
+  }
+
+
+
+  template <int dim>
+  std::vector<Vector<double>>
+  FloatingModes<dim>::row_echelon(FullMatrix<double> basis)
+  {
+    const unsigned int n_free = basis.m(), n_modes = basis.n();
+    unsigned int       row = 0;
     for (unsigned int column = 0; column < n_modes && row < n_free; ++column)
       {
         unsigned int pivot = row;
@@ -225,6 +259,127 @@ namespace mbfem
         free_modes[k](a) = (std::abs(basis(k, a)) < 1e-12 ? 0. : basis(k, a));
     return free_modes;
   }
+
+
+
+  namespace
+  {
+    /**
+     * The coefficients, in the rigid-body modes of a block (centre
+     * @p block_centre, size @p block_size), of each rigid-body mode about
+     * @p centre scaled by @p size (one column each): a rotation about
+     * another point is the same rotation about the block's centre plus a
+     * translation.
+     */
+    template <int dim>
+    FullMatrix<double>
+    modes_in_block_frame(const Point<dim> &centre,
+                         const double      size,
+                         const Point<dim> &block_centre,
+                         const double      block_size)
+    {
+      const unsigned int   n = (dim == 2 ? 3 : 6);
+      FullMatrix<double>   m(n, n);
+      const Tensor<1, dim> r = (block_centre - centre) / size;
+      for (unsigned int d = 0; d < dim; ++d)
+        m(d, d) = 1.;
+      if (dim == 2)
+        {
+          m(0, 2) = -r[1];
+          m(1, 2) = r[0];
+          m(2, 2) = block_size / size;
+        }
+      else
+        for (unsigned int axis = 0; axis < 3; ++axis)
+          {
+            Tensor<1, dim> e;
+            e[axis]                   = 1.;
+            const Tensor<1, dim> curl = cross_product_3d(e, r);
+            for (unsigned int c = 0; c < dim; ++c)
+              m(c, dim + axis) = curl[c];
+            m(dim + axis, dim + axis) = block_size / size;
+          }
+      return m;
+    }
+
+
+
+    /** An orthonormal basis of the span of @p vectors (Gram-Schmidt). */
+    std::vector<Vector<double>>
+    orthonormal(const std::vector<Vector<double>> &vectors)
+    {
+      std::vector<Vector<double>> basis;
+      for (Vector<double> v : vectors)
+        {
+          for (const auto &q : basis)
+            v.add(-(q * v), q);
+          const double norm = v.l2_norm();
+          if (norm > 1e-10)
+            {
+              v /= norm;
+              basis.push_back(v);
+            }
+        }
+      return basis;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::vector<Vector<double>>
+  FloatingModes<dim>::free_group_motions(
+    const std::vector<const FloatingModes<dim> *> &group,
+    Point<dim>                                    &centre,
+    double                                        &size)
+  {
+    centre = Point<dim>();
+    for (const auto *block : group)
+      centre += block->mode_centre / static_cast<double>(group.size());
+    size = 0.;
+    for (const auto *block : group)
+      size = std::max(
+        {size, block->mode_size, (block->mode_centre - centre).norm()});
+
+    // G = sum over blocks of (P_b M_b)^T (P_b M_b): M_b the group's modes
+    // in the block's, P_b the projector off the block's free modes. A
+    // motion is free for the group where every P_b M_b maps it to zero.
+    const unsigned int       n = (dim == 2 ? 3 : 6);
+    LAPACKFullMatrix<double> gram(n, n);
+    for (const auto *block : group)
+      {
+        FullMatrix<double> held = modes_in_block_frame(centre,
+                                                       size,
+                                                       block->mode_centre,
+                                                       block->mode_size);
+        for (const auto &q : orthonormal(block->free_coefficients))
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              double along = 0.;
+              for (unsigned int i = 0; i < n; ++i)
+                along += q(i) * held(i, j);
+              for (unsigned int i = 0; i < n; ++i)
+                held(i, j) -= along * q(i);
+            }
+        for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int b = 0; b < n; ++b)
+            for (unsigned int i = 0; i < n; ++i)
+              gram(a, b) += held(i, a) * held(i, b);
+      }
+
+    // Of unit order as in free_combinations(): a held motion has an
+    // eigenvalue of order (block size / group size)^2 or more.
+    Vector<double>     eigenvalues;
+    FullMatrix<double> eigenvectors;
+    gram.compute_eigenvalues_symmetric(
+      -1., 1e-10, 1e-14, eigenvalues, eigenvectors);
+    FullMatrix<double> basis(eigenvalues.size(), n);
+    for (unsigned int k = 0; k < eigenvalues.size(); ++k)
+      for (unsigned int a = 0; a < n; ++a)
+        basis(k, a) = eigenvectors(a, k);
+    return row_echelon(basis);
+  }
+
 
 
   template <int dim>

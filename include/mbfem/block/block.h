@@ -339,6 +339,13 @@ namespace mbfem
     const std::vector<Vector<double>> &
     free_rigid_body_modes() const;
 
+    /** The free modes with the frame they are taken in (FloatingModes). */
+    const FloatingModes<dim> &
+    get_floating_modes() const
+    {
+      return floating;
+    }
+
     /** "translation x", "rotation about z", ... for messages. */
     static std::string
     describe_rigid_body_mode(const Vector<double> &coefficients);

@@ -4,6 +4,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <string>
@@ -53,10 +54,48 @@ namespace mbfem
     const std::vector<types::global_dof_index> &
     pins() const;
 
-    /** All rigid-body modes as displacement vectors (see the class). */
+    /**
+     * The point the rotations are taken about and the length the modes
+     * are scaled by (the class), as compute() found them: a block's modes
+     * in another frame, for a group of blocks (free_group_motions()).
+     */
+    const Point<dim> &
+    centre() const;
+    double
+    size() const;
+
+    /**
+     * All rigid-body modes as displacement vectors (see the class); their
+     * centre and size into @p centre and @p size if given.
+     */
     static std::vector<Vector<double>>
     rigid_body_modes(const DoFHandler<dim> &dof_handler,
-                     const Mapping<dim>    &mapping);
+                     const Mapping<dim>    &mapping,
+                     Point<dim>            *centre = nullptr,
+                     double                *size   = nullptr);
+
+    /**
+     * The rigid motions that the blocks of @p group, moving together as
+     * one body, leave free under all their supports: a motion whose
+     * restriction to every block is a free mode of that block. Each block
+     * may be held in some directions only (a roller here, another there);
+     * the group is held when these directions together leave no motion
+     * free. Returned as coefficients of the rigid-body modes about
+     * @p centre (the mean of the blocks' centres) scaled by @p size, in
+     * reduced row-echelon form (row_echelon()); empty if the group is held.
+     */
+    static std::vector<Vector<double>>
+    free_group_motions(const std::vector<const FloatingModes<dim> *> &group,
+                       Point<dim>                                    &centre,
+                       double                                        &size);
+
+    /**
+     * The rows of @p basis (a basis of a space of mode coefficients) in
+     * reduced row-echelon form, entries below 1e-12 set to zero: unique and
+     * readable ("translation x", not "0.71 translation x + 0.71 ...").
+     */
+    static std::vector<Vector<double>>
+    row_echelon(FullMatrix<double> basis);
 
     /** "translation x", "0.50 translation x + rotation about z", ... */
     static std::string
@@ -76,6 +115,8 @@ namespace mbfem
     std::vector<Vector<double>>          free_coefficients;
     std::vector<Vector<double>>          free_modes;
     std::vector<types::global_dof_index> pinned;
+    Point<dim>                           mode_centre;
+    double                               mode_size = 1.;
   };
 } // namespace mbfem
 
