@@ -19,8 +19,8 @@ Models (a fresh seed each run unless --seed):
       blocks meeting at a vertical edge whose foot is on the base: five
       blocks at a point), all of one height H 0.3-8 m, widths 0.5-4 m,
       on a base plane dipping at theta (5-30 deg).
-  Both: p = 1 or 2, elements of 1/2 to 1/8 m along the faces (at least 2
-  on each), friction angle 15-45 deg on the base joints and, drawn apart,
+  Both: p = 1 or 2, elements of 1/2 to 1/8 m along the faces in 2D, of
+  1 m in 3D (at least 2 on each face, in 3D at most 4), friction angle 15-45 deg on the base joints and, drawn apart,
   on the faces between blocks, cohesion 0-20 kPa on every joint in one
   model of two, no tensile strength, unit weight 25 kN/m3 applied in
   full from the first increment (no other load).
@@ -57,8 +57,8 @@ factor is above DIVIDE (the run converges) or outside the certificate's
 search range (s below 0.001: a column no strength holds) is drawn again.
 
   /usr/bin/python3 scripts/cross_point_certificates.py [--count 200]
-      [--dimension 2] [--seed N] [--mbfem build/mbfem] [--work DIR]
-      [--test]
+      [--dimension 2] [--degrees 1,2] [--seed N] [--mbfem build/mbfem]
+      [--work DIR] [--test]
 
 Prints one line per model (its drawn values, both factors, their ratio)
 and a summary; exits 1 if any conforming factor falls below the gapped
@@ -89,12 +89,13 @@ D, MARGIN = 1.0, 1.0   # depth of the base, base beyond the blocks
 # Models
 # ---------------------------------------------------------------------------
 
-def draw(rng, dim):
+def draw(rng, dim, degrees=(1, 2)):
     """One model: blocks, slope, joint laws, degree, element size."""
     m = dict(dim=dim, theta=rng.uniform(5., 30.),
              phi=rng.uniform(15., 45.), phi_face=rng.uniform(15., 45.),
              c=(rng.uniform(0., 20e3) if rng.random() < 0.5 else 0.),
-             p=rng.choice([1, 2]), h=rng.choice([0.5, 0.25, 0.125]))
+             p=rng.choice(list(degrees)),
+             h=rng.choice([0.5, 0.25, 0.125]))
     if dim == 2:
         n = rng.choice([2, 3])
         m["L"] = [rng.uniform(0.5, 4.) for _ in range(n)]
@@ -106,12 +107,16 @@ def draw(rng, dim):
         m["Lx"] = [rng.uniform(0.5, 3.) for _ in range(nx)]
         m["Ly"] = [rng.uniform(0.5, 3.) for _ in range(ny)]
         m["H"] = rng.uniform(0.3, 8.)
-        m["h"] = max(m["h"], 0.25)   # 3D meshes kept small
+        # 3D meshes kept small: at most 4 elements along an edge (a 3D
+        # certificate has 64 rows per pair, and the fast iteration's
+        # solves grow with the faces' nodes).
+        m["h"] = 1.
+        m["cap"] = 4
     return m
 
 
-def divisions(length, h):
-    return max(2, min(16, int(round(length / h))))
+def divisions(length, h, cap=16):
+    return max(2, min(cap, int(round(length / h))))
 
 
 def describe(m):
@@ -181,16 +186,16 @@ def cuts(lengths, gap):
     return starts
 
 
-def strips(starts, lengths, h):
+def strips(starts, lengths, h, cap=16):
     """The base's pieces along an axis: margin, blocks and gaps between
     them, margin (x0, x1, divisions)."""
-    pieces = [(-MARGIN, 0., divisions(MARGIN, 2 * h) - 1)]
+    pieces = [(-MARGIN, 0., divisions(MARGIN, 2 * h, cap) - 1)]
     for i, (x, L) in enumerate(zip(starts, lengths)):
         if i > 0 and x > pieces[-1][1] + 1e-15:
             pieces.append((pieces[-1][1], x, 1))
-        pieces.append((x, x + L, divisions(L, h)))
+        pieces.append((x, x + L, divisions(L, h, cap)))
     end = pieces[-1][1]
-    pieces.append((end, end + MARGIN, divisions(MARGIN, 2 * h) - 1))
+    pieces.append((end, end + MARGIN, divisions(MARGIN, 2 * h, cap) - 1))
     return [(a, b, max(1, n)) for a, b, n in pieces]
 
 
@@ -243,7 +248,9 @@ def write_geo_3d(path, m, gap):
     g, h = Geo(), m["h"]
     nx, ny = len(m["Lx"]), len(m["Ly"])
     xs, ys = cuts(m["Lx"], gap), cuts(m["Ly"], gap)
-    px, py = strips(xs, m["Lx"], h), strips(ys, m["Ly"], h)
+    cap = m["cap"]
+    px = strips(xs, m["Lx"], h, cap)
+    py = strips(ys, m["Ly"], h, cap)
     block_of = {}
     for ix, x in enumerate(xs):
         for iy, y in enumerate(ys):
@@ -256,7 +263,7 @@ def write_geo_3d(path, m, gap):
             if k is not None:
                 surfaces[k] = s
             base.append(s)
-    nz, nd = divisions(m["H"], h), divisions(D, 2 * h)
+    nz, nd = divisions(m["H"], h, cap), divisions(D, 2 * h, cap)
     out = g.out
     # The plan rotated first (a mesh extruded and then rotated loses its
     # extrusion), then extruded along the rotated normal.
@@ -433,6 +440,9 @@ def main():
     parser.add_argument("--mbfem", default=os.path.join(SOURCE, "build",
                                                         "mbfem"))
     parser.add_argument("--work", default="")
+    parser.add_argument("--degrees", default="1,2",
+                        help="the degrees drawn from (3D at p = 2 costs "
+                        "some 60 s a model, p = 1 some 5 s)")
     parser.add_argument("--test", action="store_true")
     args = parser.parse_args()
     if not os.access(args.mbfem, os.X_OK):
@@ -448,7 +458,8 @@ def main():
     worst = (math.inf, None)
     start = time.time()
     while done < args.count:
-        m = draw(rng, args.dimension)
+        m = draw(rng, args.dimension,
+                 [int(p) for p in args.degrees.split(",")])
         name = "model%03d" % done
         # First the gapped model at strength / DIVIDE, for its factor to
         # some 1e-5; then both at strength / (1.05 x that), where the
