@@ -8,8 +8,10 @@
 #include <mbfem/mesh/mesh_checks.h>
 #include <mbfem/output/interface_report.h>
 #include <mbfem/output/pair_output.h>
+#include <mbfem/output/screen_detail.h>
 
 #include <deal.II/base/timer.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <cmath>
 #include <cstdio>
@@ -226,27 +228,57 @@ namespace mbfem
           << ", " << dim << "D" << (dim == 2 ? " plane strain" : "")
           << ", FE_Q(" << first.get_fe().degree << ")^" << dim << ", MappingQ("
           << first.get_mapping().get_degree() << ")\n";
+    screen =
+      std::make_unique<ScreenDetail>(parameters.output, blocks.size(), pcout);
+    if (screen->summary())
+      print_block_counts();
+    ConditionalOStream &out = screen->detail("blocks");
     for (const auto &block : blocks)
       {
-        pcout << (blocks.size() == 1 ? "" : "  " + block->name() + ":\n")
-              << "  cells: " << block->get_triangulation().n_active_cells()
-              << ", degrees of freedom: " << block->n_dofs()
-              << (parameters.discretisation.block_degrees.empty() ?
-                    std::string() :
-                    ", FE_Q(" + std::to_string(block->get_fe().degree) + ")")
-              << "\n"
-              << "  E = " << block->get_material().youngs_modulus
-              << ", nu = " << block->get_material().poissons_ratio << "\n";
+        out << (blocks.size() == 1 ? "" : "  " + block->name() + ":\n")
+            << "  cells: " << block->get_triangulation().n_active_cells()
+            << ", degrees of freedom: " << block->n_dofs()
+            << (parameters.discretisation.block_degrees.empty() ?
+                  std::string() :
+                  ", FE_Q(" + std::to_string(block->get_fe().degree) + ")")
+            << "\n"
+            << "  E = " << block->get_material().youngs_modulus
+            << ", nu = " << block->get_material().poissons_ratio << "\n";
         const auto &free_modes = block->free_rigid_body_modes();
         if (!free_modes.empty())
           {
-            pcout << "  floating: free rigid-body modes";
+            out << "  floating: free rigid-body modes";
             for (const auto &mode : free_modes)
-              pcout << " [" << Block<dim>::describe_rigid_body_mode(mode)
-                    << "]";
-            pcout << ", held by contact\n";
+              out << " [" << Block<dim>::describe_rigid_body_mode(mode) << "]";
+            out << ", held by contact\n";
           }
       }
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_block_counts() const
+  {
+    types::global_dof_index n_dofs  = 0;
+    unsigned int            n_cells = 0, n_floating = 0;
+    double                  smallest = 1e300, largest = 0.;
+    for (const auto &block : blocks)
+      {
+        n_dofs += block->n_dofs();
+        n_cells += block->get_triangulation().n_active_cells();
+        n_floating += !block->free_rigid_body_modes().empty();
+        smallest =
+          std::min(smallest, GridTools::volume(block->get_triangulation()));
+        largest =
+          std::max(largest, GridTools::volume(block->get_triangulation()));
+      }
+    pcout << "  cells: " << n_cells << ", degrees of freedom: " << n_dofs
+          << "; " << n_floating << " floating block(s) held by contact; "
+          << (dim == 2 ? "areas " : "volumes ") << smallest << " to " << largest
+          << " (detail per block in " << parameters.output.directory << "/"
+          << parameters.output.base_name << "-blocks.txt)\n";
   }
 
 
@@ -401,6 +433,26 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /**
+     * Clears the progress line that @p contact shows in place on a terminal
+     * when the increment's solve ends, however it ends.
+     */
+    template <int dim>
+    struct ProgressLine
+    {
+      ContactSolver<dim> *contact;
+      ~ProgressLine()
+      {
+        if (contact)
+          contact->end_progress();
+      }
+    };
+  } // namespace
+
+
+
   template <int dim>
   void
   MultiBodyProblem<dim>::do_increment(const unsigned int k)
@@ -414,9 +466,13 @@ namespace mbfem
     switch_configuration(k);
     if (contact)
       contact->start_progress(k);
-    increment_contact_seconds = 0.;
-    const unsigned int plastic_iterations =
-      solve_increment(k, iterations, reference_iterations, plastic_update);
+    increment_contact_seconds       = 0.;
+    unsigned int plastic_iterations = 0;
+    {
+      const ProgressLine<dim> line{contact};
+      plastic_iterations =
+        solve_increment(k, iterations, reference_iterations, plastic_update);
+    }
     for (const auto &block : blocks)
       block->plastic_state().commit();
     if (dim == 3 && !trial_run && contact &&
@@ -577,7 +633,9 @@ namespace mbfem
             << newton_suspensions << " step(s); the elastic stiffness "
             << "(initial-stress method) took over in them\n";
     if (contact)
-      print_interface_summary(*contact, parameters.contact, pcout);
+      print_interface_summary(*contact,
+                              parameters.contact,
+                              screen->detail("interfaces"));
     if (reference)
       print_comparison_summary();
     if (contact && !parameters.run.test_mode)
@@ -596,6 +654,8 @@ namespace mbfem
       pcout << "  contact pairs per increment in " << base
             << "-pairs-*.csv, a line per increment in " << base
             << "-summary.csv\n";
+    if (screen && screen->summary())
+      pcout << "  " << screen->files() << "\n";
     if (!parameters.run.test_mode)
       timer.print_summary();
   }
@@ -1511,23 +1571,35 @@ namespace mbfem
       pcout << "    water in the joints: sum of p_w A = " << std::scientific
             << std::setprecision(6) << water->resultant(time)
             << std::defaultfloat << std::setprecision(6) << "\n";
-    // The resultant each interface transmits (force on its side b).
     if (contact)
-      for (unsigned int i = 0; i < parameters.contact.interfaces.size(); ++i)
-        {
-          Tensor<1, dim> resultant;
-          for (unsigned int p = 0; p < contact->pairs().size(); ++p)
-            if (contact->pairs()[p].interface == i)
-              resultant += contact->force(p);
-          pcout << "    interface " << i + 1 << ": resultant force on side b ("
-                << std::scientific << std::setprecision(6);
-          for (unsigned int d = 0; d < dim; ++d)
-            pcout << (d > 0 ? ", " : "")
-                  << (std::abs(resultant[d]) < 1e-12 * resultant.norm() ?
-                        0. :
-                        resultant[d]);
-          pcout << ")" << std::defaultfloat << std::setprecision(6) << "\n";
-        }
+      print_resultants(k, time);
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_resultants(const unsigned int k,
+                                          const double       time) const
+  {
+    // The resultant each interface transmits (force on its side b).
+    std::vector<Tensor<1, dim>> resultant(parameters.contact.interfaces.size());
+    for (unsigned int p = 0; p < contact->pairs().size(); ++p)
+      resultant[contact->pairs()[p].interface] += contact->force(p);
+    ConditionalOStream &out = screen->detail("interfaces");
+    if (screen->summary())
+      out << "  increment " << k << ", t = " << time << ":\n";
+    for (unsigned int i = 0; i < resultant.size(); ++i)
+      {
+        out << "    interface " << i + 1 << ": resultant force on side b ("
+            << std::scientific << std::setprecision(6);
+        for (unsigned int d = 0; d < dim; ++d)
+          out << (d > 0 ? ", " : "")
+              << (std::abs(resultant[i][d]) < 1e-12 * resultant[i].norm() ?
+                    0. :
+                    resultant[i][d]);
+        out << ")" << std::defaultfloat << std::setprecision(6) << "\n";
+      }
   }
 
 

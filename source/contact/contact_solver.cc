@@ -3,6 +3,8 @@
 #include <mbfem/contact/lemke_method.h>
 #include <mbfem/contact/semismooth_newton.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -91,6 +93,9 @@ namespace mbfem
   {
     progress.out      = out;
     progress.interval = seconds;
+    progress.in_place = (out == &std::cout && isatty(STDOUT_FILENO) == 1);
+    if (progress.in_place)
+      progress.interval = 1.;
   }
 
 
@@ -100,6 +105,15 @@ namespace mbfem
   ContactSolver<dim>::start_progress(const unsigned int increment)
   {
     progress.start(increment);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSolver<dim>::end_progress()
+  {
+    progress.clear();
   }
 
 
@@ -120,10 +134,21 @@ namespace mbfem
   void
   StateProgress::start(const unsigned int k)
   {
+    clear();
     increment = k;
     solves    = 0;
     clock.restart();
-    next = interval;
+    next = in_place ? 2. : interval;
+  }
+
+
+
+  void
+  StateProgress::clear()
+  {
+    if (shown)
+      *out << "\r\033[K" << std::flush;
+    shown = false;
   }
 
 
@@ -135,9 +160,14 @@ namespace mbfem
     if (out == nullptr || clock.wall_time() < next)
       return;
     next = clock.wall_time() + interval;
-    *out << "    ... increment " << increment << ": " << solves
-         << " state solves in " << static_cast<int>(clock.wall_time()) << " s, "
-         << method << ", now " << states << std::endl;
+    *out << (in_place ? "\r" : "") << "    ... increment " << increment << ": "
+         << solves << " state solves in " << static_cast<int>(clock.wall_time())
+         << " s, " << method << ", now " << states;
+    if (in_place)
+      *out << "\033[K" << std::flush;
+    else
+      *out << std::endl;
+    shown = in_place;
   }
 
 

@@ -43,6 +43,17 @@ namespace mbfem
         "doc/contact_problems.md. An increment on which the state iteration "
         "gives up (exit code 3) is always written, as "
         "BASE-failed-problem-STEP. Condensed formulation only.");
+      prm.declare_entry(
+        "Screen",
+        "auto",
+        Patterns::Selection("auto|full|summary"),
+        "How much the screen shows. full: every block (cells, DoFs, "
+        "material, free modes), every interface's resultant force at every "
+        "increment and every interface's report at the end. summary: the "
+        "counts, one line per increment and the run's summary; the detail "
+        "per block goes to BASE-blocks.txt and per interface to "
+        "BASE-interfaces.txt in the output folder, which the screen names. "
+        "auto: full for at most 20 blocks, summary beyond.");
     }
     prm.leave_subsection();
   }
@@ -58,6 +69,7 @@ namespace mbfem
       base_name              = prm.get("Base name");
       write_vtu              = prm.get_bool("Write VTU");
       write_contact_problems = prm.get_bool("Write contact problems");
+      screen                 = prm.get("Screen");
     }
     prm.leave_subsection();
     AssertThrow(!base_name.empty() && base_name.find('/') == std::string::npos,

@@ -6,6 +6,7 @@
 #include <mbfem/contact/contact_solver.h>
 #include <mbfem/interface/joint_water.h>
 #include <mbfem/output/output.h>
+#include <mbfem/output/screen_detail.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -96,9 +97,26 @@ namespace mbfem
     void
     factorize_blocks(const std::vector<ContactPair<dim>> &pairs);
 
-    /** The blocks' sizes, materials and free rigid-body modes. */
+    /**
+     * The blocks' sizes, materials and free rigid-body modes (on the screen
+     * or in the blocks' detail file: ScreenDetail).
+     */
     void
     print_blocks() const;
+
+    /** The screen's summary of many blocks: cells, DoFs, floating, sizes. */
+    void
+    print_block_counts() const;
+
+    /**
+     * The resultant force of every interface at increment @p k (on the
+     * screen or in the interfaces' detail file).
+     */
+    void
+    print_resultants(const unsigned int k, const double time) const;
+
+    /** Where print_blocks() and the interfaces' detail go. */
+    mutable std::unique_ptr<ScreenDetail> screen;
 
     /** Every block with free rigid-body modes has a pair that can hold it. */
     void

@@ -49,7 +49,10 @@ namespace mbfem
    * A progress line for a long state iteration: at most one every
    * 'interval' seconds, naming the increment, the state solves so far,
    * the method and the states of the trial in hand. Off without a stream
-   * (test mode: its lines depend on the machine's speed).
+   * (test mode: its lines depend on the machine's speed). On a terminal
+   * (@p in_place) one line that updates every second from the second
+   * second on and is cleared when the increment ends, as users of
+   * long-running tools expect; in a log a line every 'interval' seconds.
    */
   struct StateProgress
   {
@@ -60,8 +63,14 @@ namespace mbfem
     void
     step(const std::string &method, const std::string &states);
 
+    /** Clears the line shown in place, if any. */
+    void
+    clear();
+
     std::ostream *out       = nullptr;
     double        interval  = 10.;
+    bool          in_place  = false;
+    bool          shown     = false;
     unsigned int  increment = 0, solves = 0;
     double        next = 0.;
     Timer         clock;
@@ -213,6 +222,10 @@ namespace mbfem
      */
     void
     start_progress(const unsigned int increment);
+
+    /** Clears a progress line shown in place (StateProgress). */
+    void
+    end_progress();
 
     /**
      * Back to the states before the first increment (no slip, nothing

@@ -41,6 +41,8 @@ namespace mbfem
     bool        write_vtu = true;
     /** Each increment's condensed contact problem (ContactProblem). */
     bool write_contact_problems = false;
+    /** 'auto', 'full' or 'summary' (ScreenDetail). */
+    std::string screen = "auto";
   };
 
   /**
