@@ -43,7 +43,12 @@ a column 0.78 m wide and 7.01 m high leaning on its neighbour gave
 0.3971324, 0.3971291, 0.3971278 and 0.3971270 with gaps of 1, 2, 4 and
 10 micrometres and 0.3971266 touching, not monotone in the gap, 1.4e-5
 apart at most. So the comparison allows TOL = 1e-4 relative: ten times
-that, and far below what issue 65's cases lost (3.8 % and 0.8 %).
+that, and far below what issue 65's cases lost (3.8 % and 0.8 %). In 3D
+the certificate's cones are polygons of 64 sides around the circle, turned
+with each pair's frame (whose sign the interface's sides decide: 'blocks
+2:3' and 'boundaries 101:110' need not agree), so a factor may move by up
+to 1 - cos(pi / 64) = 1.2e-3 with the frames alone (doc/state_iteration.md,
+"undecided"); TOL_3D adds that: a 2 x 2 arrangement gave 0.99977.
 
 How the strength factor is read: each variant runs with every joint's
 strength (tan(phi) and c) divided by DIVIDE, so that its first increment
@@ -81,6 +86,7 @@ SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 UNIT_WEIGHT = 25e3
 GAP = 1e-6
 TOL = 1e-4
+TOL_3D = TOL + 1. - math.cos(math.pi / 64)
 DIVIDE = 20.
 D, MARGIN = 1.0, 1.0   # depth of the base, base beyond the blocks
 
@@ -449,7 +455,8 @@ def main():
         sys.exit("--mbfem: %s is not an executable" % args.mbfem)
     seed = args.seed if args.seed is not None else random.randrange(10**9)
     print("seed %d, %d models in %dD (GAP %g m, TOL %g, strength divided by "
-          "%g)" % (seed, args.count, args.dimension, GAP, TOL, DIVIDE),
+          "%g)" % (seed, args.count, args.dimension, GAP,
+                   TOL if args.dimension == 2 else TOL_3D, DIVIDE),
           flush=True)
     rng = random.Random(seed)
     work = args.work or tempfile.mkdtemp(prefix="mbfem-cross-points-")
@@ -460,7 +467,8 @@ def main():
     while done < args.count:
         m = draw(rng, args.dimension,
                  [int(p) for p in args.degrees.split(",")])
-        name = "model%03d" % done
+        # Named by the draw, so that a model drawn again keeps its files.
+        name = "model%03d" % (done + redrawn)
         # First the gapped model at strength / DIVIDE, for its factor to
         # some 1e-5; then both at strength / (1.05 x that), where the
         # certificate's six decimals give it to 1e-6.
@@ -498,12 +506,13 @@ def main():
             continue
         ratio = conforming[0] / gapped[0]
         worst = min(worst, (ratio, name))
-        if ratio < 1. - TOL:
+        tol = TOL if args.dimension == 2 else TOL_3D
+        if ratio < 1. - tol:
             below.append((name, ratio, m))
         line = "%s %s | gapped %.6f (%d pairs) | conforming %.6f (%d pairs)" \
                " | ratio %.7f%s" % (name, describe(m), gapped[0], gapped[2],
                                     conforming[0], conforming[2], ratio,
-                                    "  BELOW" if ratio < 1. - TOL else "")
+                                    "  BELOW" if ratio < 1. - tol else "")
         if not args.test:
             line += " | %.1f + %.1f s" % (gapped[3], conforming[3])
         print(line, flush=True)
@@ -511,7 +520,8 @@ def main():
           "divided strength or out of the certificate's range), %d with the "
           "conforming factor below the gapped one's by more than %g, %d runs "
           "without a certificate; smallest ratio %.7f (%s)%s" % (
-              done, redrawn, len(below), TOL, len(errors), worst[0],
+              done, redrawn, len(below),
+              TOL if args.dimension == 2 else TOL_3D, len(errors), worst[0],
               worst[1], "" if args.test else
               "; %.0f s, work folder %s" % (time.time() - start, work)))
     for name, variant, result, m in errors:
