@@ -645,21 +645,34 @@ namespace mbfem
   {
     statics_owner.clear();
     statics_areas.clear();
+    statics_rows.reset();
+    const bool any_split = std::any_of(contact_pairs.begin(),
+                                       contact_pairs.end(),
+                                       [](const auto &pair) {
+                                         return !pair.cross_point_pairs.empty();
+                                       });
+    // Without a split pair the candidates are the pairs, and the
+    // coupling's own rows serve: nothing is copied.
     std::vector<ContactPair<dim>> split;
     for (unsigned int k = 0; k < n_pairs; ++k)
       {
         const auto &pair = contact_pairs[k];
-        for (const auto &one : pair.cross_point_pairs.empty() ?
-                                 std::vector<ContactPair<dim>>{pair} :
-                                 pair.cross_point_pairs)
+        if (pair.cross_point_pairs.empty())
           {
             statics_owner.push_back(k);
-            statics_areas.push_back(one.area);
-            split.push_back(one);
+            statics_areas.push_back(pair.area);
+            if (any_split)
+              split.push_back(pair);
           }
+        else
+          for (const auto &one : pair.cross_point_pairs)
+            {
+              statics_owner.push_back(k);
+              statics_areas.push_back(one.area);
+              split.push_back(one);
+            }
       }
-    statics_rows.reset();
-    if (split.size() > n_pairs)
+    if (any_split)
       statics_rows =
         std::make_unique<CouplingRows>(coupling.rows_of(blocks, split));
   }
