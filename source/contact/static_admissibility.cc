@@ -199,7 +199,47 @@ namespace mbfem
         }
     }
 
-    /** Loads @p lp into @p model and solves it; throws unless optimal. */
+    /**
+     * Clp's primal and dual tolerances. Its defaults (1e-7, on the problem
+     * as its own scaling leaves it) let a solution it calls optimal break
+     * this LP's rows by 1e-4 of the load: a 3D model of 107 pairs, whose
+     * 64-sided cones make the LP highly degenerate, was "admissible" 1.2 %
+     * above its strength factor (issue 65's 2 x 2 model, doc/
+     * state_iteration.md). The rows are scaled by construction (the load's
+     * largest entry 1, facets of unit normal), so the solve can ask for
+     * two orders below the certificate's own feasibility_tolerance (1e-8).
+     */
+    constexpr double clp_tolerance = 1e-10;
+
+    /**
+     * The largest violation of a row or bound a solution may have for its
+     * phase-1 optimum to be trusted: below feasibility_tolerance, so that
+     * no "admissible" rests on forces that break the equilibrium rows.
+     */
+    constexpr double largest_violation = 1e-9;
+
+    /** How far @p x breaks the rows and bounds of @p lp (absolute). */
+    double
+    violation(const LinearProgram &lp, const double *x)
+    {
+      std::vector<double> ax(lp.row_lower.size(), 0.);
+      for (unsigned int i = 0; i < lp.values.size(); ++i)
+        ax[lp.rows[i]] += lp.values[i] * x[lp.columns[i]];
+      double worst = 0.;
+      for (unsigned int r = 0; r < ax.size(); ++r)
+        worst =
+          std::max({worst, ax[r] - lp.row_upper[r], lp.row_lower[r] - ax[r]});
+      for (unsigned int c = 0; c < lp.column_lower.size(); ++c)
+        worst = std::max(
+          {worst, x[c] - lp.column_upper[c], lp.column_lower[c] - x[c]});
+      return worst;
+    }
+
+    /**
+     * Loads @p lp into @p model and solves it with Clp's dual simplex,
+     * again without Clp's scaling if the answer breaks the rows; throws
+     * unless the answer is optimal and keeps to largest_violation.
+     */
     void
     solve_phase_one(const LinearProgram &lp, ClpSimplex &model)
     {
@@ -208,20 +248,33 @@ namespace mbfem
                                     lp.columns.data(),
                                     lp.values.data(),
                                     lp.values.size());
-      model.setLogLevel(0);
-      model.loadProblem(matrix,
-                        lp.column_lower.data(),
-                        lp.column_upper.data(),
-                        lp.objective.data(),
-                        lp.row_lower.data(),
-                        lp.row_upper.data());
-      model.dual();
+      double                 broken = 0.;
+      for (const int scaling : {3, 0})
+        {
+          model.setLogLevel(0);
+          model.loadProblem(matrix,
+                            lp.column_lower.data(),
+                            lp.column_upper.data(),
+                            lp.objective.data(),
+                            lp.row_lower.data(),
+                            lp.row_upper.data());
+          model.scaling(scaling);
+          model.setPrimalTolerance(clp_tolerance);
+          model.setDualTolerance(clp_tolerance);
+          model.dual();
+          broken = violation(lp, model.primalColumnSolution());
+          if (model.isProvenOptimal() && broken <= largest_violation)
+            return;
+        }
       // The slacks make every phase-1 LP feasible and bounded below by 0:
-      // anything but optimal is the solver's failure, not the model's.
-      AssertThrow(model.isProvenOptimal(),
+      // anything but an optimum that keeps to the rows is the solver's
+      // failure, not the model's.
+      AssertThrow(false,
                   ExcMessage("The statics certificate's linear program (Clp) "
                              "ended with status " +
-                             std::to_string(model.status()) + "."));
+                             std::to_string(model.status()) +
+                             " and a solution that breaks its rows by " +
+                             std::to_string(broken) + "."));
     }
 
     /**
