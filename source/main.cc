@@ -6,9 +6,9 @@
 
 #include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/analysis/order_study.h>
+#include <mbfem/analysis/parameters.h>
 #include <mbfem/base/exceptions.h>
 #include <mbfem/base/interruption.h>
-#include <mbfem/base/parameters.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
@@ -192,6 +192,63 @@ namespace
                          format == "json" ? ParameterHandler::ShortJSON :
                                             ParameterHandler::PRM);
   }
+  /**
+   * After MPI is up: --help, --print-parameters, or the run of the file
+   * named; the exit code.
+   */
+  int
+  run_command(const int argc, char *argv[], dealii::ConditionalOStream &pcout)
+  {
+    using namespace dealii;
+    const std::string first = (argc > 1 ? argv[1] : "");
+    if (argc < 2 || first == "--help" || first == "-h")
+      {
+        print_usage(argc < 2 ? std::cerr : std::cout);
+        return argc < 2 ? 1 : 0;
+      }
+    if (first == "--print-parameters")
+      {
+        print_parameters(argc, argv);
+        return 0;
+      }
+    AssertThrow(argc == 2,
+                ExcMessage("mbfem takes one parameter file; see --help."));
+
+    const unsigned int dim = mbfem::read_dimension(first);
+    if (dim == 2)
+      run<2>(first, pcout);
+    else
+      run<3>(first, pcout);
+    if (mbfem::received_signal() != 0)
+      return report_signal(mbfem::received_signal(),
+                           "after the last increment (its summary may be "
+                           "incomplete); the files on disk are complete (the "
+                           "PVD index lists the increments written)");
+    return 0;
+  }
+
+
+
+  /** The exit code and message of a run stopped by a signal. */
+  int
+  report_interruption(const mbfem::Interrupted &stop)
+  {
+    if (stop.last_complete_increment == -2)
+      return report_signal(stop.signal,
+                           "during a trial of strength reduction; the "
+                           "trials so far are in the strength-reduction "
+                           "CSV, no results were written");
+    if (stop.last_complete_increment < 0)
+      return report_signal(stop.signal,
+                           "during the set-up, before the first increment; "
+                           "no results were written");
+    return report_signal(stop.signal,
+                         "after increment " +
+                           std::to_string(stop.last_complete_increment) +
+                           ", the last complete one; the files on disk are "
+                           "complete (the PVD index lists the increments "
+                           "written)");
+  }
 } // namespace
 
 
@@ -225,48 +282,11 @@ main(int argc, char *argv[])
       ConditionalOStream pcout(
         std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
 
-      const std::string first = (argc > 1 ? argv[1] : "");
-      if (argc < 2 || first == "--help" || first == "-h")
-        {
-          print_usage(argc < 2 ? std::cerr : std::cout);
-          return argc < 2 ? 1 : 0;
-        }
-      if (first == "--print-parameters")
-        {
-          print_parameters(argc, argv);
-          return 0;
-        }
-      AssertThrow(argc == 2,
-                  ExcMessage("mbfem takes one parameter file; see --help."));
-
-      const unsigned int dim = mbfem::read_dimension(first);
-      if (dim == 2)
-        run<2>(first, pcout);
-      else
-        run<3>(first, pcout);
-      if (mbfem::received_signal() != 0)
-        return report_signal(mbfem::received_signal(),
-                             "after the last increment (its summary may be "
-                             "incomplete); the files on disk are complete (the "
-                             "PVD index lists the increments written)");
+      return run_command(argc, argv, pcout);
     }
   catch (mbfem::Interrupted &stop)
     {
-      if (stop.last_complete_increment == -2)
-        return report_signal(stop.signal,
-                             "during a trial of strength reduction; the "
-                             "trials so far are in the strength-reduction "
-                             "CSV, no results were written");
-      if (stop.last_complete_increment < 0)
-        return report_signal(stop.signal,
-                             "during the set-up, before the first increment; "
-                             "no results were written");
-      return report_signal(stop.signal,
-                           "after increment " +
-                             std::to_string(stop.last_complete_increment) +
-                             ", the last complete one; the files on disk are "
-                             "complete (the PVD index lists the increments "
-                             "written)");
+      return report_interruption(stop);
     }
   catch (ExceptionBase &exc)
     {

@@ -9,7 +9,7 @@
 // (measured when written: 1.1e-12 for both, round-off).
 
 #include <mbfem/analysis/multibody_problem.h>
-#include <mbfem/base/parameters.h>
+#include <mbfem/analysis/parameters.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/numerics/fe_field_function.h>

@@ -8,7 +8,7 @@
 // bisection stops at 1e-7 of it, so five decimals are stable).
 
 #include <mbfem/analysis/multibody_problem.h>
-#include <mbfem/base/parameters.h>
+#include <mbfem/analysis/parameters.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>

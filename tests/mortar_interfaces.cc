@@ -29,7 +29,7 @@
 //     largest, and the same states.
 
 #include <mbfem/analysis/multibody_problem.h>
-#include <mbfem/base/parameters.h>
+#include <mbfem/analysis/parameters.h>
 
 #include <deal.II/base/mpi.h>
 

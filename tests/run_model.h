@@ -5,7 +5,7 @@
 #define mbfem_tests_run_model_h
 
 #include <mbfem/analysis/multibody_problem.h>
-#include <mbfem/base/parameters.h>
+#include <mbfem/analysis/parameters.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>

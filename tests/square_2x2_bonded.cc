@@ -11,7 +11,7 @@
 // square_2x2_pull and square_2x2_push exercise.)
 
 #include <mbfem/analysis/multibody_problem.h>
-#include <mbfem/base/parameters.h>
+#include <mbfem/analysis/parameters.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/numerics/fe_field_function.h>

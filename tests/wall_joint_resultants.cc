@@ -12,7 +12,7 @@
 // in both contact formulations.
 
 #include <mbfem/analysis/multibody_problem.h>
-#include <mbfem/base/parameters.h>
+#include <mbfem/analysis/parameters.h>
 
 #include <deal.II/base/mpi.h>
 

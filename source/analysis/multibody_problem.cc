@@ -1,10 +1,10 @@
 #include <mbfem/analysis/block_measures.h>
+#include <mbfem/analysis/input_checks.h>
 #include <mbfem/analysis/multibody_problem.h>
+#include <mbfem/analysis/parameters.h>
 #include <mbfem/base/exceptions.h>
-#include <mbfem/base/input_checks.h>
 #include <mbfem/base/interruption.h>
 #include <mbfem/base/parallel.h>
-#include <mbfem/base/parameters.h>
 #include <mbfem/mesh/mesh_checks.h>
 #include <mbfem/output/interface_report.h>
 #include <mbfem/output/pair_output.h>
@@ -123,7 +123,7 @@ namespace mbfem
   MultiBodyProblem<dim>::factorises_blocks() const
   {
     return !parameters.contact.declares_interfaces() ||
-           parameters.contact.runs_condensed();
+           parameters.contact_solver.runs_condensed();
   }
 
 
@@ -162,7 +162,7 @@ namespace mbfem
           if (CondensedSystem<dim>::is_on_demand(
                 *blocks[b],
                 n_contact_dofs,
-                parameters.contact.flexibility_columns))
+                parameters.contact_solver.flexibility_columns))
             blocks[b]->set_flexibility_on_demand();
           TimerOutput::Scope t(timer, "factorisation");
           Timer              clock;
@@ -324,7 +324,8 @@ namespace mbfem
     check_blocks_held(pairs);
     factorize_blocks(pairs);
 
-    const ContactParameters &contact_parameters = parameters.contact;
+    const ContactSolverParameters &contact_parameters =
+      parameters.contact_solver;
     AssertThrow(!parameters.plasticity.newton || pairs.empty() ||
                   !contact_parameters.runs_monolithic(),
                 ExcMessage(
@@ -379,33 +380,52 @@ namespace mbfem
           }
         monolithic_seconds += clock.wall_time();
       }
-    if (parameters.water_pressure.enabled())
-      {
-        for (auto &configuration : configurations)
-          configuration.water =
-            std::make_unique<JointWater<dim>>(parameters.water_pressure,
-                                              parameters.contact,
-                                              configuration.solver->pairs(),
-                                              blocks.size());
-        water = configurations[0].water.get();
-        // The stage with the most pairs (the model finished, unless some
-        // stage removes blocks).
-        const Configuration &most =
-          *std::max_element(configurations.begin(),
-                            configurations.end(),
-                            [](const Configuration &a, const Configuration &b) {
-                              return a.pairs.size() < b.pairs.size();
-                            });
-        pcout << "  water pressure on " << most.water->n_wet_pairs() << " of "
-              << most.pairs.size() << " pairs (both faces of the joint)\n";
-      }
+    make_water();
+    print_formulation(pairs.size());
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::make_water()
+  {
+    if (!parameters.water_pressure.enabled())
+      return;
+    for (auto &configuration : configurations)
+      configuration.water =
+        std::make_unique<JointWater<dim>>(parameters.water_pressure,
+                                          parameters.contact,
+                                          configuration.solver->pairs(),
+                                          blocks.size());
+    water = configurations[0].water.get();
+    // The stage with the most pairs (the model finished, unless some
+    // stage removes blocks).
+    const Configuration &most =
+      *std::max_element(configurations.begin(),
+                        configurations.end(),
+                        [](const Configuration &a, const Configuration &b) {
+                          return a.pairs.size() < b.pairs.size();
+                        });
+    pcout << "  water pressure on " << most.water->n_wet_pairs() << " of "
+          << most.pairs.size() << " pairs (both faces of the joint)\n";
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_formulation(const unsigned int n_pairs) const
+  {
+    const ContactSolverParameters &contact_parameters =
+      parameters.contact_solver;
     pcout << "  contact formulation: "
           << (!contact_parameters.runs_monolithic() ? "condensed" :
               !contact_parameters.runs_condensed()  ? "monolithic" :
                                                       "both");
     if (contact_parameters.runs_monolithic())
       {
-        types::global_dof_index n = pairs.size() * dim;
+        types::global_dof_index n = n_pairs * dim;
         for (const auto &block : blocks)
           n += block->n_dofs();
         pcout << " (monolithic system of " << n << " unknowns)";
@@ -500,24 +520,8 @@ namespace mbfem
     if (contact)
       {
         if (!trial_run)
-          {
-            std::vector<double> water_pressure;
-            for (unsigned int i = 0; water && i < contact->pairs().size(); ++i)
-              water_pressure.push_back(water->pressure(i, time));
-            pair_file =
-              write_pair_files(*contact,
-                               parameters.output,
-                               k,
-                               time,
-                               water_pressure,
-                               parameters.load_history.changes_model() ?
-                                 configurations[active_configuration].pairs :
-                                 std::vector<unsigned int>());
-            if (parameters.output.write_contact_problems &&
-                contact->formulation() == ContactFormulation::condensed)
-              contact->condensed_problem(k, time).write(problem_stem(k, ""));
-            write_summary(k, time, iterations, reference_iterations);
-          }
+          pair_file =
+            write_contact_files(k, time, iterations, reference_iterations);
         check_ranks_agree();
         contact->commit();
         if (reference)
@@ -528,22 +532,61 @@ namespace mbfem
         stop_if_signalled(-2); // -2: in a trial, nothing written
         return;
       }
-    if (writer)
-      {
-        TimerOutput::Scope       t(timer, "output");
-        std::vector<std::string> files;
-        // Each rank writes the blocks it owns; an error on one ends all.
-        Parallel::together(MPI_COMM_WORLD, [&]() {
-          for (const auto &block : blocks)
-            if (block->presence(time) > 0.) // not before a stage adds it
-              files.push_back(writer->write_block(*block, block->get_id(), k));
-        });
-        writer->add_step(time, files);
-        if (pair_writer)
-          pair_writer->add_step(time, {pair_file});
-      }
+    write_blocks(k, time, pair_file);
     last_written_increment = k;
     stop_if_signalled(k); // SIGINT/SIGTERM: end here, files complete
+  }
+
+
+
+  template <int dim>
+  std::string
+  MultiBodyProblem<dim>::write_contact_files(
+    const unsigned int k,
+    const double       time,
+    const unsigned int iterations,
+    const unsigned int reference_iterations)
+  {
+    std::vector<double> water_pressure;
+    for (unsigned int i = 0; water && i < contact->pairs().size(); ++i)
+      water_pressure.push_back(water->pressure(i, time));
+    const std::string pair_file =
+      write_pair_files(*contact,
+                       parameters.output,
+                       k,
+                       time,
+                       water_pressure,
+                       parameters.load_history.changes_model() ?
+                         configurations[active_configuration].pairs :
+                         std::vector<unsigned int>());
+    if (parameters.output.write_contact_problems &&
+        contact->formulation() == ContactFormulation::condensed)
+      contact->condensed_problem(k, time).write(problem_stem(k, ""));
+    write_summary(k, time, iterations, reference_iterations);
+    return pair_file;
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::write_blocks(const unsigned int k,
+                                      const double       time,
+                                      const std::string &pair_file)
+  {
+    if (!writer)
+      return;
+    TimerOutput::Scope       t(timer, "output");
+    std::vector<std::string> files;
+    // Each rank writes the blocks it owns; an error on one ends all.
+    Parallel::together(MPI_COMM_WORLD, [&]() {
+      for (const auto &block : blocks)
+        if (block->presence(time) > 0.) // not before a stage adds it
+          files.push_back(writer->write_block(*block, block->get_id(), k));
+    });
+    writer->add_step(time, files);
+    if (pair_writer)
+      pair_writer->add_step(time, {pair_file});
   }
 
 
@@ -665,6 +708,55 @@ namespace mbfem
   namespace
   {
     /**
+     * Why an increment failed although statics (and limit equilibrium
+     * along its mechanism, where there is one) admits forces: the text
+     * that follows an admissible certificate.
+     */
+    template <int dim>
+    std::string
+    why_admissible_but_failed(
+      const typename StaticAdmissibility<dim>::Result &result,
+      const ContactSolver<dim>                        &contact)
+    {
+      std::string why;
+      if (result.limit_mechanism.empty())
+        why = "    Statics admits forces with these joint strengths and "
+              "gives no mechanism to check limit equilibrium along. The "
+              "state iteration found no equilibrium: a failure of the "
+              "iteration, or of the model beyond what statics can "
+              "prove.";
+      else if (result.mechanism_factor_bounded && result.mechanism_factor < 1.)
+        why = "    Statics admits forces with these joint strengths; "
+              "the mechanism of its limit is none the blocks could be "
+              "held along even with 1000 times the strength, so it "
+              "says nothing here. The state iteration found no "
+              "equilibrium: a failure of the iteration, or of the "
+              "model beyond what statics can prove.";
+      else
+        why = "    Statics and limit equilibrium along the mechanism "
+              "both admit forces with these joint strengths, and the "
+              "state iteration found no equilibrium: a failure of the "
+              "iteration, or of the elastic model where it opens "
+              "joints whose cohesion rigid-block statics counts "
+              "(statics cannot prove that the elastic model has a "
+              "solution; doc/contact_problems.md says how to check the "
+              "increment's problem).";
+      // Where nothing can break, what is left is the solver or
+      // friction beyond the existence result's conditions
+      // (doc/decisions.md).
+      if (!contact.has_strength_to_lose())
+        why += " No joint of this increment has cohesion or tensile "
+               "strength to lose, so breaking is not the reason; what "
+               "is left is the solver, or friction beyond the "
+               "conditions of the existence result (doc/decisions.md, "
+               "\"A method that concludes\"): check the increment's "
+               "problem with another solver, or report it.";
+      return why;
+    }
+
+
+
+    /**
      * Ends the run after an increment failed for good (after any step
      * halvings) with the verdict of the statics certificate for the loads
      * of the last step tried: none exist (ExcNoEquilibrium, exit code 2),
@@ -753,40 +845,8 @@ namespace mbfem
         }
       if (result.verdict == Verdict::admissible)
         {
-          std::string why;
-          if (result.limit_mechanism.empty())
-            why = "    Statics admits forces with these joint strengths and "
-                  "gives no mechanism to check limit equilibrium along. The "
-                  "state iteration found no equilibrium: a failure of the "
-                  "iteration, or of the model beyond what statics can "
-                  "prove.";
-          else if (result.mechanism_factor_bounded &&
-                   result.mechanism_factor < 1.)
-            why = "    Statics admits forces with these joint strengths; "
-                  "the mechanism of its limit is none the blocks could be "
-                  "held along even with 1000 times the strength, so it "
-                  "says nothing here. The state iteration found no "
-                  "equilibrium: a failure of the iteration, or of the "
-                  "model beyond what statics can prove.";
-          else
-            why = "    Statics and limit equilibrium along the mechanism "
-                  "both admit forces with these joint strengths, and the "
-                  "state iteration found no equilibrium: a failure of the "
-                  "iteration, or of the elastic model where it opens "
-                  "joints whose cohesion rigid-block statics counts "
-                  "(statics cannot prove that the elastic model has a "
-                  "solution; doc/contact_problems.md says how to check the "
-                  "increment's problem).";
-          // Where nothing can break, what is left is the solver or
-          // friction beyond the existence result's conditions
-          // (doc/decisions.md).
-          if (!contact->has_strength_to_lose())
-            why += " No joint of this increment has cohesion or tensile "
-                   "strength to lose, so breaking is not the reason; what "
-                   "is left is the solver, or friction beyond the "
-                   "conditions of the existence result (doc/decisions.md, "
-                   "\"A method that concludes\"): check the increment's "
-                   "problem with another solver, or report it.";
+          const std::string why =
+            why_admissible_but_failed<dim>(result, *contact);
           throw Exceptions::ExcNotConvergedButAdmissible(
             text.str() + why + "\n" + write_problem());
         }
@@ -819,7 +879,8 @@ namespace mbfem
   void
   MultiBodyProblem<dim>::print_formulation_times() const
   {
-    const ContactParameters &contact_parameters = parameters.contact;
+    const ContactSolverParameters &contact_parameters =
+      parameters.contact_solver;
     pcout << "  time of the contact formulation(s) alone (wall, s): ";
     if (contact_parameters.runs_condensed())
       pcout << "condensed " << std::setprecision(3) << condensed_seconds
@@ -1016,6 +1077,70 @@ namespace mbfem
 
   template <int dim>
   void
+  MultiBodyProblem<dim>::assemble_loads(const double time,
+                                        const bool   condensed,
+                                        const bool   loads_everywhere)
+  {
+    TimerOutput::Scope t(timer, "load response");
+    Parallel::together(MPI_COMM_WORLD, [&]() {
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        {
+          Block<dim> &block = *blocks[b];
+          block.assemble_load(parameters.boundary_conditions,
+                              time,
+                              loads_everywhere);
+          if (water)
+            water->add_load(b, block, time);
+          add_released_forces(b, time); // from the pairs of removed blocks
+          if (condensed)
+            {
+              Timer clock;
+              block.solve(); // on the block's owner
+              condensed_seconds += clock.wall_time();
+            }
+        }
+    });
+    if (Parallel::n_ranks() > 1)
+      for (const auto &block : blocks)
+        block->share_load_resultant();
+    if (condensed)
+      share_solutions();
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::recover_fields(const bool condensed)
+  {
+    TimerOutput::Scope t(timer, "field recovery");
+    Timer              clock;
+    Parallel::together(MPI_COMM_WORLD, [&]() {
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        if (condensed)
+          {
+            std::vector<types::global_dof_index> dofs;
+            std::vector<double>                  forces;
+            contact->forces_on_block(b, dofs, forces);
+            blocks[b]->add_point_forces(dofs, forces);
+            blocks[b]->solve(contact->floating_amplitudes(b));
+          }
+        else
+          {
+            Vector<double> displacement;
+            contact->block_solution(b, *blocks[b], displacement);
+            blocks[b]->set_solution(std::move(displacement));
+          }
+    });
+    if (condensed)
+      share_solutions();
+    (condensed ? condensed_seconds : monolithic_seconds) += clock.wall_time();
+  }
+
+
+
+  template <int dim>
+  void
   MultiBodyProblem<dim>::solve_pass(const unsigned int k,
                                     const double       time,
                                     unsigned int      &iterations,
@@ -1028,32 +1153,7 @@ namespace mbfem
     // (the floating blocks' F_e is shared below); the monolithic system
     // assembles every block's on every rank.
     const bool loads_everywhere = !condensed || reference != nullptr;
-    {
-      TimerOutput::Scope t(timer, "load response");
-      Parallel::together(MPI_COMM_WORLD, [&]() {
-        for (unsigned int b = 0; b < blocks.size(); ++b)
-          {
-            Block<dim> &block = *blocks[b];
-            block.assemble_load(parameters.boundary_conditions,
-                                time,
-                                loads_everywhere);
-            if (water)
-              water->add_load(b, block, time);
-            add_released_forces(b, time); // from the pairs of removed blocks
-            if (condensed)
-              {
-                Timer clock;
-                block.solve(); // on the block's owner
-                condensed_seconds += clock.wall_time();
-              }
-          }
-      });
-      if (Parallel::n_ranks() > 1)
-        for (const auto &block : blocks)
-          block->share_load_resultant();
-      if (condensed)
-        share_solutions();
-    }
+    assemble_loads(time, condensed, loads_everywhere);
     if (contact)
       {
         {
@@ -1073,29 +1173,7 @@ namespace mbfem
             last_reference_seconds = clock.wall_time();
             monolithic_seconds += last_reference_seconds;
           }
-        TimerOutput::Scope t(timer, "field recovery");
-        Timer              clock;
-        Parallel::together(MPI_COMM_WORLD, [&]() {
-          for (unsigned int b = 0; b < blocks.size(); ++b)
-            if (condensed)
-              {
-                std::vector<types::global_dof_index> dofs;
-                std::vector<double>                  forces;
-                contact->forces_on_block(b, dofs, forces);
-                blocks[b]->add_point_forces(dofs, forces);
-                blocks[b]->solve(contact->floating_amplitudes(b));
-              }
-            else
-              {
-                Vector<double> displacement;
-                contact->block_solution(b, *blocks[b], displacement);
-                blocks[b]->set_solution(std::move(displacement));
-              }
-        });
-        if (condensed)
-          share_solutions();
-        (condensed ? condensed_seconds : monolithic_seconds) +=
-          clock.wall_time();
+        recover_fields(condensed);
       }
   }
 

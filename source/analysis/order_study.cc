@@ -1,8 +1,8 @@
 #include <mbfem/analysis/block_measures.h>
 #include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/analysis/order_study.h>
+#include <mbfem/analysis/parameters.h>
 #include <mbfem/base/parallel.h>
-#include <mbfem/base/parameters.h>
 #include <mbfem/base/text_input.h>
 #include <mbfem/mesh/mesh.h>
 
@@ -548,6 +548,42 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /**
+     * Under mpirun: each row of @p rows from the rank that computed it
+     * (@p owners) to all (the rates are computed afterwards).
+     */
+    void
+    share_rows(const std::vector<unsigned int> &owners,
+               std::vector<OrderStudyRow>      &rows)
+    {
+      for (unsigned int i = 0; i < rows.size(); ++i)
+        {
+          std::array<double, 6> values = {
+            {double(rows[i].degrees.empty() ? 0 : rows[i].degrees[0]),
+             double(rows[i].refinement),
+             double(rows[i].n_cells),
+             double(rows[i].n_dofs),
+             rows[i].total.displacement_error,
+             rows[i].total.stress_error}};
+          Parallel::broadcast(MPI_COMM_WORLD,
+                              owners[i],
+                              values.data(),
+                              values.size());
+          rows[i].degrees    = {static_cast<unsigned int>(values[0])};
+          rows[i].refinement = static_cast<unsigned int>(values[1]);
+          rows[i].n_cells    = static_cast<unsigned int>(values[2]);
+          rows[i].n_dofs     = static_cast<unsigned int>(values[3]);
+          rows[i].total.displacement_error = values[4];
+          rows[i].total.stress_error       = values[5];
+          // compute_rates() sets the rates
+        }
+    }
+  } // namespace
+
+
+
   template <int dim>
   std::vector<OrderStudyRow>
   OrderStudy<dim>::solve_all(const Timer &timer) const
@@ -606,27 +642,7 @@ namespace mbfem
       });
     if (n_ranks > 1)
       {
-        for (unsigned int i = 0; i < cases.size(); ++i)
-          {
-            std::array<double, 6> values = {
-              {double(rows[i].degrees.empty() ? 0 : rows[i].degrees[0]),
-               double(rows[i].refinement),
-               double(rows[i].n_cells),
-               double(rows[i].n_dofs),
-               rows[i].total.displacement_error,
-               rows[i].total.stress_error}};
-            Parallel::broadcast(MPI_COMM_WORLD,
-                                owners[i],
-                                values.data(),
-                                values.size());
-            rows[i].degrees    = {static_cast<unsigned int>(values[0])};
-            rows[i].refinement = static_cast<unsigned int>(values[1]);
-            rows[i].n_cells    = static_cast<unsigned int>(values[2]);
-            rows[i].n_dofs     = static_cast<unsigned int>(values[3]);
-            rows[i].total.displacement_error = values[4];
-            rows[i].total.stress_error       = values[5];
-            // compute_rates() sets the rates
-          }
+        share_rows(owners, rows);
         if (!parameters.run.test_mode)
           pcout << "  " << cases.size() << " cases on " << n_ranks
                 << " MPI ranks: " << timer.wall_time() << " s" << std::endl;

@@ -3,7 +3,7 @@
 // one to the next (doc/dam_safety.md, "Stages that add blocks").
 
 #include <mbfem/analysis/multibody_problem.h>
-#include <mbfem/base/parameters.h>
+#include <mbfem/analysis/parameters.h>
 
 #include <deal.II/base/types.h>
 
@@ -26,6 +26,168 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /** What a model that changes in stages cannot be combined with. */
+    template <int dim>
+    void
+    check_stages_allowed(const Parameters<dim> &parameters)
+    {
+      const std::string what =
+        "'Load history/Added blocks' and 'Interfaces switched on'";
+      AssertThrow(!parameters.contact.declares_interfaces() ||
+                    !parameters.contact_solver.runs_monolithic(),
+                  ExcMessage(what + " work with the condensed formulation "
+                                    "only: set 'Contact/Formulation = "
+                                    "condensed'."));
+      AssertThrow(!parameters.plasticity.enabled,
+                  ExcMessage(what + " work with elastic blocks only "
+                                    "('Plasticity/Enabled = false')."));
+      AssertThrow(!parameters.in_situ_stress.enabled,
+                  ExcMessage(what + " cannot be combined with an in-situ "
+                                    "stress (whose equilibrium holds for all "
+                                    "blocks from the start)."));
+    }
+
+    /**
+     * Every added or removed block is a block of the mesh, and a block is
+     * removed after the stage that adds it (the first stage's entries are
+     * refused by LoadHistory: nothing came before them).
+     */
+    template <int dim>
+    void
+    check_stage_blocks(const LoadHistory                              &history,
+                       const std::vector<std::unique_ptr<Block<dim>>> &blocks)
+    {
+      const auto is_block = [&](const unsigned int id) {
+        return std::any_of(blocks.begin(), blocks.end(), [id](const auto &b) {
+          return b->get_id() == id;
+        });
+      };
+      for (const auto &stage : history.stages)
+        for (const bool adds : {true, false})
+          for (const unsigned int id :
+               (adds ? stage.added_blocks : stage.removed_blocks))
+            AssertThrow(is_block(id),
+                        ExcMessage(std::string("Load history/") +
+                                   (adds ? "Added" : "Removed") +
+                                   " blocks: stage " + quoted(stage.name) +
+                                   (adds ? " adds" : " removes") + " block " +
+                                   std::to_string(id) +
+                                   ", but no block of the mesh has material "
+                                   "id " +
+                                   std::to_string(id) + "."));
+      for (unsigned int s = 0; s < history.stages.size(); ++s)
+        for (const unsigned int id : history.stages[s].removed_blocks)
+          {
+            const unsigned int added = history.stage_adding_block(id);
+            AssertThrow(added == numbers::invalid_unsigned_int || added < s,
+                        ExcMessage("Load history/Removed blocks: stage " +
+                                   quoted(history.stages[s].name) +
+                                   " removes block " + std::to_string(id) +
+                                   ", which is added only by stage " +
+                                   quoted(history
+                                            .stages[std::min<unsigned int>(
+                                              added, history.stages.size() - 1)]
+                                            .name) +
+                                   ": a block is removed after the stage that "
+                                   "adds it."));
+          }
+    }
+
+    /**
+     * Every interface switched on is a declared one, numbered as declared
+     * ('all' puts the interfaces it finds before them).
+     */
+    void
+    check_stage_interfaces(const LoadHistory       &history,
+                           const ContactParameters &contact)
+    {
+      const auto &interfaces = contact.interfaces;
+      AssertThrow(!contact.all_shared_faces ||
+                    std::all_of(history.stages.begin(),
+                                history.stages.end(),
+                                [](const auto &stage) {
+                                  return stage.interfaces_on.empty();
+                                }),
+                  ExcMessage("Load history/Interfaces switched on numbers the "
+                             "entries of 'Contact/Interfaces', which 'all' "
+                             "renumbers with the interfaces it finds; declare "
+                             "the interfaces one by one."));
+      const auto n_declared =
+        std::count_if(interfaces.begin(), interfaces.end(), [](const auto &i) {
+          return !i.found;
+        });
+      for (const auto &stage : history.stages)
+        for (const unsigned int number : stage.interfaces_on)
+          AssertThrow(number >= 1 && number <= interfaces.size() &&
+                        !interfaces[number - 1].found,
+                      ExcMessage(
+                        "Load history/Interfaces switched on: stage " +
+                        quoted(stage.name) + " switches on interface " +
+                        std::to_string(number) +
+                        ", but 'Contact/Interfaces' declares " +
+                        std::to_string(n_declared) + " (numbered from 1)."));
+    }
+
+    /**
+     * Block @p block, which stage @p s adds, does not move before the
+     * stage begins at @p start: no platen touches it, and its prescribed
+     * displacements are zero until then.
+     */
+    template <int dim>
+    void
+    check_added_block_supports(const Block<dim>        &block,
+                               const unsigned int       s,
+                               const double             start,
+                               const LoadHistory       &history,
+                               BoundaryConditions<dim> &conditions)
+    {
+      const std::string added_by = block.name() + ", which stage " +
+                                   quoted(history.stages[s].name) + " adds, ";
+      Vector<double> value(dim);
+      for (const auto &face : block.get_triangulation().active_face_iterators())
+        {
+          if (!face->at_boundary())
+            continue;
+          const auto id = face->boundary_id();
+          AssertThrow(conditions.rigid_platens.count(id) == 0,
+                      ExcMessage(added_by +
+                                 "touches the rigid platen of boundary id " +
+                                 std::to_string(id) +
+                                 ": a platen would move it before it is "
+                                 "there."));
+          const auto support = conditions.dirichlet.find(id);
+          if (support == conditions.dirichlet.end())
+            continue;
+          for (unsigned int k = 0;
+               k <= history.n_increments && history.time(k) <= start;
+               ++k)
+            {
+              conditions.set_time(history.time(k));
+              for (const unsigned int v : face->vertex_indices())
+                {
+                  conditions.prescribed_displacement->vector_value(
+                    face->vertex(v), value);
+                  for (unsigned int c = 0; c < dim; ++c)
+                    AssertThrow(
+                      !support->second[c] || value[c] == 0.,
+                      ExcMessage(
+                        added_by + "has a prescribed displacement of " +
+                        std::to_string(value[c]) +
+                        " at t = " + std::to_string(history.time(k)) +
+                        " on boundary id " + std::to_string(id) +
+                        ", before it is there: 'Boundary conditions/"
+                        "Prescribed displacement' must be zero on an added "
+                        "block until its stage begins."));
+                }
+            }
+        }
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   MultiBodyProblem<dim>::check_staged_model()
@@ -33,88 +195,12 @@ namespace mbfem
     const LoadHistory &history = parameters.load_history;
     if (!history.changes_model())
       return;
-    const std::string what =
-      "'Load history/Added blocks' and 'Interfaces switched on'";
-    AssertThrow(!parameters.contact.declares_interfaces() ||
-                  !parameters.contact.runs_monolithic(),
-                ExcMessage(what + " work with the condensed formulation "
-                                  "only: set 'Contact/Formulation = "
-                                  "condensed'."));
-    AssertThrow(!parameters.plasticity.enabled,
-                ExcMessage(what + " work with elastic blocks only "
-                                  "('Plasticity/Enabled = false')."));
-    AssertThrow(!parameters.in_situ_stress.enabled,
-                ExcMessage(what + " cannot be combined with an in-situ "
-                                  "stress (whose equilibrium holds for all "
-                                  "blocks from the start)."));
+    check_stages_allowed(parameters);
+    check_stage_blocks(history, blocks);
+    check_stage_interfaces(history, parameters.contact);
 
-    // Every added or removed block is a block of the mesh.
-    const auto is_block = [&](const unsigned int id) {
-      return std::any_of(blocks.begin(), blocks.end(), [id](const auto &b) {
-        return b->get_id() == id;
-      });
-    };
-    for (const auto &stage : history.stages)
-      for (const bool adds : {true, false})
-        for (const unsigned int id :
-             (adds ? stage.added_blocks : stage.removed_blocks))
-          AssertThrow(is_block(id),
-                      ExcMessage(std::string("Load history/") +
-                                 (adds ? "Added" : "Removed") +
-                                 " blocks: stage " + quoted(stage.name) +
-                                 (adds ? " adds" : " removes") + " block " +
-                                 std::to_string(id) +
-                                 ", but no block of the mesh has material "
-                                 "id " +
-                                 std::to_string(id) + "."));
-    // A block is removed after the stage that adds it (the first stage's
-    // entries are refused by LoadHistory: nothing came before them).
-    for (unsigned int s = 0; s < history.stages.size(); ++s)
-      for (const unsigned int id : history.stages[s].removed_blocks)
-        {
-          const unsigned int added = history.stage_adding_block(id);
-          AssertThrow(added == numbers::invalid_unsigned_int || added < s,
-                      ExcMessage("Load history/Removed blocks: stage " +
-                                 quoted(history.stages[s].name) +
-                                 " removes block " + std::to_string(id) +
-                                 ", which is added only by stage " +
-                                 quoted(history
-                                          .stages[std::min<unsigned int>(
-                                            added, history.stages.size() - 1)]
-                                          .name) +
-                                 ": a block is removed after the stage that "
-                                 "adds it."));
-        }
-    // Every interface switched on is a declared one, numbered as declared
-    // ('all' puts the interfaces it finds before them).
-    const auto &interfaces = parameters.contact.interfaces;
-    AssertThrow(!parameters.contact.all_shared_faces ||
-                  std::all_of(history.stages.begin(),
-                              history.stages.end(),
-                              [](const auto &stage) {
-                                return stage.interfaces_on.empty();
-                              }),
-                ExcMessage("Load history/Interfaces switched on numbers the "
-                           "entries of 'Contact/Interfaces', which 'all' "
-                           "renumbers with the interfaces it finds; declare "
-                           "the interfaces one by one."));
-    for (const auto &stage : history.stages)
-      for (const unsigned int number : stage.interfaces_on)
-        AssertThrow(number >= 1 && number <= interfaces.size() &&
-                      !interfaces[number - 1].found,
-                    ExcMessage("Load history/Interfaces switched on: stage " +
-                               quoted(stage.name) + " switches on interface " +
-                               std::to_string(number) +
-                               ", but 'Contact/Interfaces' declares " +
-                               std::to_string(std::count_if(interfaces.begin(),
-                                                            interfaces.end(),
-                                                            [](const auto &i) {
-                                                              return !i.found;
-                                                            })) +
-                               " (numbered from 1)."));
-
-    // An added block does not move before its stage: its supports may not
-    // move it (prescribed values zero until then), and no platen holds it.
+    // Mark when each block comes and goes; an added block does not move
+    // before its stage.
     auto &conditions = parameters.boundary_conditions;
     for (auto &block : blocks)
       {
@@ -127,49 +213,7 @@ namespace mbfem
           continue;
         const auto [start, end] = history.stage_times(s);
         block->set_added(start, end);
-        for (const auto &face :
-             block->get_triangulation().active_face_iterators())
-          {
-            if (!face->at_boundary())
-              continue;
-            const auto id = face->boundary_id();
-            AssertThrow(conditions.rigid_platens.count(id) == 0,
-                        ExcMessage(block->name() + ", which stage " +
-                                   quoted(history.stages[s].name) +
-                                   " adds, touches the rigid platen of "
-                                   "boundary id " +
-                                   std::to_string(id) +
-                                   ": a platen would move it before it is "
-                                   "there."));
-            const auto support = conditions.dirichlet.find(id);
-            if (support == conditions.dirichlet.end())
-              continue;
-            Vector<double> value(dim);
-            for (unsigned int k = 0;
-                 k <= history.n_increments && history.time(k) <= start;
-                 ++k)
-              {
-                conditions.set_time(history.time(k));
-                for (const unsigned int v : face->vertex_indices())
-                  {
-                    conditions.prescribed_displacement->vector_value(
-                      face->vertex(v), value);
-                    for (unsigned int c = 0; c < dim; ++c)
-                      AssertThrow(
-                        !support->second[c] || value[c] == 0.,
-                        ExcMessage(
-                          block->name() + ", which stage " +
-                          quoted(history.stages[s].name) +
-                          " adds, has a prescribed displacement of " +
-                          std::to_string(value[c]) +
-                          " at t = " + std::to_string(history.time(k)) +
-                          " on boundary id " + std::to_string(id) +
-                          ", before it is there: 'Boundary conditions/"
-                          "Prescribed displacement' must be zero on an added "
-                          "block until its stage begins."));
-                  }
-              }
-          }
+        check_added_block_supports(*block, s, start, history, conditions);
       }
     conditions.set_time(0.);
   }

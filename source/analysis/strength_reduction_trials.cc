@@ -5,8 +5,8 @@
 
 #include <mbfem/analysis/block_measures.h>
 #include <mbfem/analysis/multibody_problem.h>
+#include <mbfem/analysis/parameters.h>
 #include <mbfem/base/exceptions.h>
-#include <mbfem/base/parameters.h>
 
 #include <deal.II/base/timer.h>
 

@@ -7,6 +7,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <regex>
+#include <set>
 
 namespace mbfem
 {
@@ -110,5 +112,93 @@ namespace mbfem
                      " is listed twice; give each block once."));
       }
     return values;
+  }
+
+
+  namespace
+  {
+    /** A name muparser takes for a variable or constant. */
+    bool
+    is_name(const std::string &name)
+    {
+      static const std::regex pattern("[A-Za-z_][A-Za-z0-9_]*");
+      return std::regex_match(name, pattern);
+    }
+  } // namespace
+
+
+
+  void
+  check_variable_names(const std::string &variables,
+                       const unsigned int dim,
+                       const std::string &where)
+  {
+    const std::string entry = "'" + where + "/Variable names'";
+    const auto        names = split_list(variables, ',', entry);
+    AssertThrow(names.size() == dim || names.size() == dim + 1,
+                ExcMessage(
+                  entry + " = '" + variables + "': a " + std::to_string(dim) +
+                  "D function needs " + std::to_string(dim) +
+                  " names of coordinates and optionally one of "
+                  "time, separated by ',' (e.g. '" +
+                  std::string(dim == 2 ? "x,y,t" : "x,y,z,t") + "')."));
+    for (unsigned int i = 0; i < names.size(); ++i)
+      {
+        AssertThrow(is_name(names[i]),
+                    ExcMessage(entry + " = '" + variables + "': '" + names[i] +
+                               "' is not a name (a letter or '_', then "
+                               "letters, digits or '_')."));
+        AssertThrow(std::find(names.begin(), names.begin() + i, names[i]) ==
+                      names.begin() + i,
+                    ExcMessage(entry + " = '" + variables + "': '" + names[i] +
+                               "' is named twice."));
+      }
+  }
+
+
+
+  void
+  check_function_constants(const std::string &constants,
+                           const std::string &variables,
+                           const std::string &where)
+  {
+    const std::string entry   = "'" + where + "/Function constants'";
+    const auto variable_names = Utilities::split_string_list(variables, ',');
+    for (const auto &constant : split_list(constants, ',', entry))
+      {
+        const auto parts = Utilities::split_string_list(constant, '=');
+        AssertThrow(parts.size() == 2,
+                    ExcMessage(entry + ": cannot read '" + constant +
+                               "'; write 'name=value'."));
+        AssertThrow(is_name(parts[0]),
+                    ExcMessage(entry + ": in '" + constant + "', '" + parts[0] +
+                               "' is not a name (a letter or '_', then "
+                               "letters, digits or '_')."));
+        AssertThrow(
+          std::find(variable_names.begin(), variable_names.end(), parts[0]) ==
+            variable_names.end(),
+          ExcMessage(entry + ": '" + parts[0] +
+                     "' is one of the function's variables ('" + variables +
+                     "'); give the constant another name."));
+        parse_finite_number(parts[1], entry + ", constant '" + parts[0] + "'");
+      }
+  }
+
+
+
+  void
+  check_boundary_id(const types::boundary_id            id,
+                    const std::string                  &entry,
+                    const std::set<types::boundary_id> &present)
+  {
+    std::string ids_text;
+    for (const auto present_id : present)
+      ids_text += (ids_text.empty() ? "" : ", ") + std::to_string(present_id);
+    AssertThrow(present.count(id) == 1,
+                ExcMessage("Boundary id " + std::to_string(id) + " named in '" +
+                           entry +
+                           "' is not on the boundary of the mesh, whose "
+                           "boundary ids are: " +
+                           ids_text + "."));
   }
 } // namespace mbfem

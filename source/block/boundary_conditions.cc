@@ -1,5 +1,5 @@
 #include <mbfem/base/exceptions.h>
-#include <mbfem/base/input_checks.h>
+#include <mbfem/base/text_input.h>
 #include <mbfem/block/boundary_conditions.h>
 
 #include <deal.II/base/utilities.h>
@@ -91,28 +91,18 @@ namespace mbfem
 
 
 
-  template <int dim>
-  void
-  BoundaryConditions<dim>::parse_parameters(ParameterHandler &prm)
+  namespace
   {
-    prm.enter_subsection("Boundary conditions");
+    /**
+     * 'Boundary conditions/Point supports' (@p text: 'x,y: components;
+     * ...') into @p point_supports, each point once.
+     */
+    template <int dim, typename Supports>
+    void
+    parse_point_supports(const std::string &text, Supports &point_supports)
     {
-      dirichlet = parse_component_map<dim>(
-        prm.get("Prescribed displacement boundary ids"),
-        "Boundary conditions/Prescribed displacement boundary ids");
-
-      rigid_platens.clear();
-      for (const auto &[id, mask] : parse_component_map<dim>(
-             prm.get("Rigid platen boundary ids"),
-             "Boundary conditions/Rigid platen boundary ids"))
-        for (unsigned int c = 0; c < dim; ++c)
-          if (mask[c])
-            rigid_platens[id] = c;
-
-      point_supports.clear();
       const std::string where = "Boundary conditions/Point supports";
-      for (const auto &entry :
-           split_list(prm.get("Point supports"), ';', where))
+      for (const auto &entry : split_list(text, ';', where))
         {
           const std::vector<std::string> parts =
             Utilities::split_string_list(entry, ':');
@@ -137,6 +127,31 @@ namespace mbfem
                                    "once, with all its components."));
           point_supports.emplace_back(point, masks.begin()->second);
         }
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    {
+      dirichlet = parse_component_map<dim>(
+        prm.get("Prescribed displacement boundary ids"),
+        "Boundary conditions/Prescribed displacement boundary ids");
+
+      rigid_platens.clear();
+      for (const auto &[id, mask] : parse_component_map<dim>(
+             prm.get("Rigid platen boundary ids"),
+             "Boundary conditions/Rigid platen boundary ids"))
+        for (unsigned int c = 0; c < dim; ++c)
+          if (mask[c])
+            rigid_platens[id] = c;
+
+      point_supports.clear();
+      parse_point_supports<dim>(prm.get("Point supports"), point_supports);
 
       traction_boundaries.clear();
       for (const unsigned int id :

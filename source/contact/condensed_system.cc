@@ -13,9 +13,9 @@ namespace mbfem
 {
   template <int dim>
   CondensedSystem<dim>::CondensedSystem(
-    const std::vector<ContactPair<dim>> &pairs,
-    const RigidCoupling<dim>            &coupling,
-    const ContactParameters::StateSystem state_system)
+    const std::vector<ContactPair<dim>>       &pairs,
+    const RigidCoupling<dim>                  &coupling,
+    const ContactSolverParameters::StateSystem state_system)
     : pairs(pairs)
     , coupling(coupling)
     , n_pairs(pairs.size())
@@ -177,11 +177,11 @@ namespace mbfem
   template <int dim>
   bool
   CondensedSystem<dim>::is_on_demand(
-    const Block<dim>                           &block,
-    const std::size_t                           n_contact_dofs,
-    const ContactParameters::FlexibilityColumns columns)
+    const Block<dim>                                 &block,
+    const std::size_t                                 n_contact_dofs,
+    const ContactSolverParameters::FlexibilityColumns columns)
   {
-    using Columns = ContactParameters::FlexibilityColumns;
+    using Columns = ContactSolverParameters::FlexibilityColumns;
     return n_contact_dofs > 0 && block.has_fixed_stiffness() &&
            (columns == Columns::on_demand ||
             (columns == Columns::automatic && n_contact_dofs >= 500));
@@ -508,7 +508,7 @@ namespace mbfem
   template <int dim>
   void
   CondensedSystem<dim>::set_flexibility_columns(
-    const ContactParameters::FlexibilityColumns columns)
+    const ContactSolverParameters::FlexibilityColumns columns)
   {
     flexibility_columns = columns;
   }
@@ -845,8 +845,8 @@ namespace mbfem
   CondensedSystem<dim>::use_sparse(
     const std::vector<unsigned int> &unknowns) const
   {
-    if (state_system != ContactParameters::StateSystem::automatic)
-      return state_system == ContactParameters::StateSystem::sparse;
+    if (state_system != ContactSolverParameters::StateSystem::automatic)
+      return state_system == ContactSolverParameters::StateSystem::sparse;
     const double n = unknowns.size() + coupling.n_modes();
     if (n < 1000)
       return false;

@@ -1,6 +1,6 @@
+#include <mbfem/base/files.h>
 #include <mbfem/contact/contact_problem.h>
 #include <mbfem/contact/contact_solver.h>
-#include <mbfem/output/output.h>
 
 #include <cstdio>
 #include <sstream>
@@ -49,6 +49,76 @@ namespace mbfem
              << number(value) << "\n";
       return text.str();
     }
+
+
+
+    /** The JSON fields of the pairs' data (mu to direction_stiffness). */
+    template <int dim>
+    std::string
+    pair_fields(const std::vector<typename ContactProblem<dim>::Pair> &pairs)
+    {
+      using Pair       = typename ContactProblem<dim>::Pair;
+      const auto field = [&](const auto &get) {
+        std::vector<std::string> values;
+        for (const auto &pair : pairs)
+          values.push_back(get(pair));
+        return json_list(values, [](const std::string &s) { return s; });
+      };
+      const auto vector = [](const auto &t) {
+        std::string text = "[";
+        for (unsigned int d = 0; d < dim; ++d)
+          text += (d > 0 ? ", " : "") + number(t[d]);
+        return text + "]";
+      };
+      std::ostringstream json;
+      json << "  \"mu\": " << field([](const Pair &p) { return number(p.mu); })
+           << ",\n"
+           << "  \"cohesion\": "
+           << field([](const Pair &p) { return number(p.cohesion); }) << ",\n"
+           << "  \"tension\": "
+           << field([](const Pair &p) { return number(p.tension); }) << ",\n"
+           << "  \"area\": "
+           << field([](const Pair &p) { return number(p.area); }) << ",\n"
+           << "  \"point\": "
+           << field([&](const Pair &p) { return vector(p.point); }) << ",\n"
+           << "  \"frame\": " << field([&](const Pair &p) {
+                std::string text = "[";
+                for (unsigned int i = 0; i < dim; ++i)
+                  text += (i > 0 ? ", " : "") + vector(p.frame[i]);
+                return text + "]";
+              })
+           << ",\n"
+           << "  \"state\": "
+           << field([](const Pair &p) { return "\"" + p.state + "\""; })
+           << ",\n"
+           << "  \"broken\": " << field([](const Pair &p) {
+                return std::string(p.broken ? "1" : "0");
+              })
+           << ",\n"
+           << "  \"tensile_slip\": " << field([](const Pair &p) {
+                return std::string(p.tensile_slip ? "1" : "0");
+              })
+           << ",\n"
+           << "  \"tied\": " << field([](const Pair &p) {
+                return std::string(p.tied ? "1" : "0");
+              })
+           << ",\n"
+           << "  \"held\": " << field([](const Pair &p) {
+                std::string text = "[";
+                for (unsigned int d = 0; d < dim; ++d)
+                  text +=
+                    std::string(d > 0 ? ", " : "") + (p.held[d] ? "1" : "0");
+                return text + "]";
+              })
+           << ",\n"
+           << "  \"slip_direction\": "
+           << field([&](const Pair &p) { return vector(p.slip_direction); })
+           << ",\n"
+           << "  \"direction_stiffness\": "
+           << field([](const Pair &p) { return number(p.direction_stiffness); })
+           << ",\n";
+      return json.str();
+    }
   } // namespace
 
 
@@ -66,18 +136,6 @@ namespace mbfem
           g[{i, a}] = G(i, a);
     write_file_atomically(stem + "-G.mtx", matrix_market(n_r, n_alpha, g));
 
-    const auto field = [&](const auto &get) {
-      std::vector<std::string> values;
-      for (const auto &pair : pairs)
-        values.push_back(get(pair));
-      return json_list(values, [](const std::string &s) { return s; });
-    };
-    const auto vector = [](const auto &t) {
-      std::string text = "[";
-      for (unsigned int d = 0; d < dim; ++d)
-        text += (d > 0 ? ", " : "") + number(t[d]);
-      return text + "]";
-    };
     const std::string  name = stem.substr(stem.find_last_of('/') + 1);
     std::ostringstream json;
     json
@@ -94,47 +152,7 @@ namespace mbfem
       << "  \"G\": \"" << name << "-G.mtx\",\n"
       << "  \"q\": " << json_numbers(q) << ",\n"
       << "  \"f\": " << json_numbers(f) << ",\n"
-      << "  \"mu\": " << field([](const Pair &p) { return number(p.mu); })
-      << ",\n"
-      << "  \"cohesion\": "
-      << field([](const Pair &p) { return number(p.cohesion); }) << ",\n"
-      << "  \"tension\": "
-      << field([](const Pair &p) { return number(p.tension); }) << ",\n"
-      << "  \"area\": " << field([](const Pair &p) { return number(p.area); })
-      << ",\n"
-      << "  \"point\": "
-      << field([&](const Pair &p) { return vector(p.point); }) << ",\n"
-      << "  \"frame\": " << field([&](const Pair &p) {
-           std::string text = "[";
-           for (unsigned int i = 0; i < dim; ++i)
-             text += (i > 0 ? ", " : "") + vector(p.frame[i]);
-           return text + "]";
-         })
-      << ",\n"
-      << "  \"state\": "
-      << field([](const Pair &p) { return "\"" + p.state + "\""; }) << ",\n"
-      << "  \"broken\": "
-      << field([](const Pair &p) { return std::string(p.broken ? "1" : "0"); })
-      << ",\n"
-      << "  \"tensile_slip\": " << field([](const Pair &p) {
-           return std::string(p.tensile_slip ? "1" : "0");
-         })
-      << ",\n"
-      << "  \"tied\": "
-      << field([](const Pair &p) { return std::string(p.tied ? "1" : "0"); })
-      << ",\n"
-      << "  \"held\": " << field([](const Pair &p) {
-           std::string text = "[";
-           for (unsigned int d = 0; d < dim; ++d)
-             text += std::string(d > 0 ? ", " : "") + (p.held[d] ? "1" : "0");
-           return text + "]";
-         })
-      << ",\n"
-      << "  \"slip_direction\": "
-      << field([&](const Pair &p) { return vector(p.slip_direction); }) << ",\n"
-      << "  \"direction_stiffness\": "
-      << field([](const Pair &p) { return number(p.direction_stiffness); })
-      << ",\n"
+      << pair_fields<dim>(pairs)
       << "  \"solved\": " << (r.empty() ? "false" : "true") << ",\n"
       << "  \"r\": " << json_numbers(r) << ",\n"
       << "  \"alpha\": " << json_numbers(alpha) << ",\n"

@@ -40,11 +40,11 @@ namespace mbfem
 
   template <int dim>
   ContactSolver<dim>::ContactSolver(
-    std::vector<ContactPair<dim>>        pairs,
-    const unsigned int                   max_iterations,
-    const ContactFormulation             formulation,
-    const std::string                   &solver_package,
-    const ContactParameters::StateSystem state_system)
+    std::vector<ContactPair<dim>>              pairs,
+    const unsigned int                         max_iterations,
+    const ContactFormulation                   formulation,
+    const std::string                         &solver_package,
+    const ContactSolverParameters::StateSystem state_system)
     : contact_pairs(std::move(pairs))
     , max_iterations(max_iterations)
     , n_pairs(contact_pairs.size())
@@ -756,7 +756,7 @@ namespace mbfem
   template <int dim>
   void
   ContactSolver<dim>::set_flexibility_columns(
-    const ContactParameters::FlexibilityColumns columns)
+    const ContactSolverParameters::FlexibilityColumns columns)
   {
     if (condensed != nullptr)
       condensed->set_flexibility_columns(columns);

@@ -91,131 +91,166 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    using namespace dealii;
+
+    /** The methods of an increment and their order. */
+    void
+    declare_order_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "State method",
+        "fast, load path, semismooth Newton, Lemke, load continuation",
+        Patterns::List(Patterns::Selection(state_method_names()), 1, 5),
+        "The methods of each increment's state iteration, tried in this "
+        "order until one concludes (but see 'Method order'; "
+        "doc/state_iteration.md). fast: assume "
+        "states, solve, check, switch every pair that fails its check. "
+        "load path: the increment's load applied in a continuous fraction, "
+        "one pair switching where its condition fails (condensed only). "
+        "semismooth Newton: the increment as one nonsmooth system with a "
+        "sparse Jacobian, its states then checked by a fast solve "
+        "(condensed only). Lemke: complementary pivoting on the increment's "
+        "problem as a linear complementarity problem (exact in 2D, a "
+        "faceted friction cone in 3D), its states then checked by a fast "
+        "solve (condensed only; see 'Lemke'). load continuation: "
+        "the fast iteration at each of 'Load continuation/Load factors' "
+        "times the increment's load (by "
+        "default ten times, then back to it in steps; condensed only). The "
+        "monolithic formulation runs the fast iteration only. "
+        "Where none concludes, the verdict is that of the fast iteration "
+        "or the load path (no equilibrium if one met it). The order "
+        "matters where an increment has more than one solution: each "
+        "method may find another (doc/state_iteration.md).");
+      prm.declare_entry(
+        "Fast iteration stall",
+        "10",
+        Patterns::Integer(0),
+        "Where another method follows the fast iteration in the increment's "
+        "order ('State method', 'Method order'), the fast iteration gives way to it once the number of pairs that "
+        "switch state has not fallen to a new low in this many solves "
+        "(while it switches every failing pair, before a cycle makes it "
+        "switch one at a time): it then wanders, each solve a full one (on "
+        "the 125-block cube 100 solves, 60 s, before the next method "
+        "concluded). 0: never; it ends where it converges, at 'Maximum "
+        "iterations', at a singular trial or where it cycles switching one "
+        "pair at a time.");
+      prm.declare_entry(
+        "Method order",
+        "last concluded first",
+        Patterns::Selection("as listed|last concluded first"),
+        "as listed: every increment tries the methods of 'State method' in "
+        "their order. last concluded first: where the load path or the "
+        "semismooth Newton method concluded the last increment, the next "
+        "starts with it, the others following in their order, so that a "
+        "model whose increments the fast iteration does not conclude pays "
+        "for its trials once, not at every increment (doc/state_iteration.md; "
+        "Lemke's method and the load continuation are not moved: their work "
+        "does not shrink with the increment's). A run's first increment, a "
+        "stage's that changes the contact set-up (an excavation), each "
+        "trial of a strength reduction and the plastic Newton method's passes "
+        "after an increment's first (whose fast iteration starts from the "
+        "last pass's states) start as listed. Where an increment has more "
+        "than one solution the order decides which is found.");
+    }
+
+    /** Contact/Semismooth Newton. */
+    void
+    declare_newton_entries(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Semismooth Newton");
+      {
+        prm.declare_entry("Maximum iterations",
+                          "200",
+                          Patterns::Integer(1),
+                          "Newton iterations per system (the system is solved "
+                          "again each time a joint breaks) before the method "
+                          "gives up on the increment.");
+        prm.declare_entry(
+          "Tolerance",
+          "1e-11",
+          Patterns::Double(1e-15, state_tolerance),
+          "Newton has converged where every residual is below this times the "
+          "largest force or displacement of the increment's data. At most "
+          "1e-9, the state check's tolerance, so that the states read from "
+          "Newton's answer are those the check accepts.");
+        prm.declare_entry(
+          "Proximal stiffness",
+          "1e-4",
+          Patterns::Double(0.),
+          "Where Newton's method stalls or meets a singular Jacobian (mostly "
+          "a floating block that no closed pair holds), it starts again with "
+          "every "
+          "floating block held by a spring to where it was, this stiff "
+          "relative to a contact, and moves the springs' anchors to the "
+          "blocks after each solve (a proximal point iteration on the rigid "
+          "motions) until the springs carry nothing; then Newton's method "
+          "without springs concludes; where the springs fail after a "
+          "singular Jacobian, Newton's method runs once more with "
+          "Levenberg-Marquardt's steps past it. 0: no springs.");
+        prm.declare_entry("Proximal steps",
+                          "100",
+                          Patterns::Integer(1),
+                          "How often the springs' anchors may move before the "
+                          "second try gives up.");
+      }
+      prm.leave_subsection();
+    }
+
+    /** Contact/Lemke. */
+    void
+    declare_lemke_entries(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Lemke");
+      {
+        prm.declare_entry(
+          "Maximum variables",
+          "2000",
+          Patterns::Integer(1),
+          "Lemke's method is not tried on an increment whose problem has more "
+          "variables than this (in 2D 4 or 5 per pair and 2 per floating "
+          "mode; in 3D 10 or 11 per pair): its tableau is dense, 16 n^2 bytes "
+          "(64 MB at 2000), and a pivot costs 2 n^2 operations.");
+        prm.declare_entry(
+          "Pivots per variable",
+          "10",
+          Patterns::Integer(1),
+          "Lemke's method gives up after this many pivots per variable of the "
+          "problem (it needed 0.5 to 0.8 on the problems of "
+          "doc/state_iteration.md).");
+      }
+      prm.leave_subsection();
+    }
+
+    /** Contact/Load continuation. */
+    void
+    declare_continuation_entries(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Load continuation");
+      {
+        prm.declare_entry(
+          "Load factors",
+          "10, 5, 2, 1",
+          Patterns::List(Patterns::Double(0.), 1),
+          "The increment's load, from the last converged state, times each "
+          "factor in turn, the fast iteration at each from the states of the "
+          "last; the last factor must be 1 (the increment's load).");
+      }
+      prm.leave_subsection();
+    }
+
+  } // namespace
+
+
+
   void
   StateMethodParameters::declare_parameters(dealii::ParameterHandler &prm)
   {
-    using namespace dealii;
-    prm.declare_entry(
-      "State method",
-      "fast, load path, semismooth Newton, Lemke, load continuation",
-      Patterns::List(Patterns::Selection(state_method_names()), 1, 5),
-      "The methods of each increment's state iteration, tried in this "
-      "order until one concludes (but see 'Method order'; "
-      "doc/state_iteration.md). fast: assume "
-      "states, solve, check, switch every pair that fails its check. "
-      "load path: the increment's load applied in a continuous fraction, "
-      "one pair switching where its condition fails (condensed only). "
-      "semismooth Newton: the increment as one nonsmooth system with a "
-      "sparse Jacobian, its states then checked by a fast solve "
-      "(condensed only). Lemke: complementary pivoting on the increment's "
-      "problem as a linear complementarity problem (exact in 2D, a "
-      "faceted friction cone in 3D), its states then checked by a fast "
-      "solve (condensed only; see 'Lemke'). load continuation: "
-      "the fast iteration at each of 'Load continuation/Load factors' "
-      "times the increment's load (by "
-      "default ten times, then back to it in steps; condensed only). The "
-      "monolithic formulation runs the fast iteration only. "
-      "Where none concludes, the verdict is that of the fast iteration "
-      "or the load path (no equilibrium if one met it). The order "
-      "matters where an increment has more than one solution: each "
-      "method may find another (doc/state_iteration.md).");
-    prm.declare_entry(
-      "Fast iteration stall",
-      "10",
-      Patterns::Integer(0),
-      "Where another method follows the fast iteration in the increment's "
-      "order ('State method', 'Method order'), the fast iteration gives way to it once the number of pairs that "
-      "switch state has not fallen to a new low in this many solves "
-      "(while it switches every failing pair, before a cycle makes it "
-      "switch one at a time): it then wanders, each solve a full one (on "
-      "the 125-block cube 100 solves, 60 s, before the next method "
-      "concluded). 0: never; it ends where it converges, at 'Maximum "
-      "iterations', at a singular trial or where it cycles switching one "
-      "pair at a time.");
-    prm.declare_entry(
-      "Method order",
-      "last concluded first",
-      Patterns::Selection("as listed|last concluded first"),
-      "as listed: every increment tries the methods of 'State method' in "
-      "their order. last concluded first: where the load path or the "
-      "semismooth Newton method concluded the last increment, the next "
-      "starts with it, the others following in their order, so that a "
-      "model whose increments the fast iteration does not conclude pays "
-      "for its trials once, not at every increment (doc/state_iteration.md; "
-      "Lemke's method and the load continuation are not moved: their work "
-      "does not shrink with the increment's). A run's first increment, a "
-      "stage's that changes the contact set-up (an excavation), each "
-      "trial of a strength reduction and the plastic Newton method's passes "
-      "after an increment's first (whose fast iteration starts from the "
-      "last pass's states) start as listed. Where an increment has more "
-      "than one solution the order decides which is found.");
-    prm.enter_subsection("Semismooth Newton");
-    {
-      prm.declare_entry("Maximum iterations",
-                        "200",
-                        Patterns::Integer(1),
-                        "Newton iterations per system (the system is solved "
-                        "again each time a joint breaks) before the method "
-                        "gives up on the increment.");
-      prm.declare_entry(
-        "Tolerance",
-        "1e-11",
-        Patterns::Double(1e-15, state_tolerance),
-        "Newton has converged where every residual is below this times the "
-        "largest force or displacement of the increment's data. At most "
-        "1e-9, the state check's tolerance, so that the states read from "
-        "Newton's answer are those the check accepts.");
-      prm.declare_entry(
-        "Proximal stiffness",
-        "1e-4",
-        Patterns::Double(0.),
-        "Where Newton's method stalls or meets a singular Jacobian (mostly "
-        "a floating block that no closed pair holds), it starts again with "
-        "every "
-        "floating block held by a spring to where it was, this stiff "
-        "relative to a contact, and moves the springs' anchors to the "
-        "blocks after each solve (a proximal point iteration on the rigid "
-        "motions) until the springs carry nothing; then Newton's method "
-        "without springs concludes; where the springs fail after a "
-        "singular Jacobian, Newton's method runs once more with "
-        "Levenberg-Marquardt's steps past it. 0: no springs.");
-      prm.declare_entry("Proximal steps",
-                        "100",
-                        Patterns::Integer(1),
-                        "How often the springs' anchors may move before the "
-                        "second try gives up.");
-    }
-    prm.leave_subsection();
-    prm.enter_subsection("Lemke");
-    {
-      prm.declare_entry(
-        "Maximum variables",
-        "2000",
-        Patterns::Integer(1),
-        "Lemke's method is not tried on an increment whose problem has more "
-        "variables than this (in 2D 4 or 5 per pair and 2 per floating "
-        "mode; in 3D 10 or 11 per pair): its tableau is dense, 16 n^2 bytes "
-        "(64 MB at 2000), and a pivot costs 2 n^2 operations.");
-      prm.declare_entry(
-        "Pivots per variable",
-        "10",
-        Patterns::Integer(1),
-        "Lemke's method gives up after this many pivots per variable of the "
-        "problem (it needed 0.5 to 0.8 on the problems of "
-        "doc/state_iteration.md).");
-    }
-    prm.leave_subsection();
-    prm.enter_subsection("Load continuation");
-    {
-      prm.declare_entry(
-        "Load factors",
-        "10, 5, 2, 1",
-        Patterns::List(Patterns::Double(0.), 1),
-        "The increment's load, from the last converged state, times each "
-        "factor in turn, the fast iteration at each from the states of the "
-        "last; the last factor must be 1 (the increment's load).");
-    }
-    prm.leave_subsection();
+    declare_order_entries(prm);
+    declare_newton_entries(prm);
+    declare_lemke_entries(prm);
+    declare_continuation_entries(prm);
   }
 
 

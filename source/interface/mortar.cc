@@ -505,6 +505,105 @@ namespace mbfem
 
 
 
+    /** The curve of face @p f of its block. */
+    FaceCurve
+    curve_of(const std::vector<std::unique_ptr<Block<2>>> &blocks,
+             const SideFace<2>                            &f)
+    {
+      return {blocks[f.block]->get_mapping(), f.cell, f.face, f.normal};
+    }
+
+    /**
+     * The face of @p other_faces (among @p candidates) that the line from
+     * @p x along @p n meets nearest, within @p reach, and where on it
+     * (eta); invalid_unsigned_int if none.
+     */
+    std::pair<unsigned int, double>
+    faced_face_2d(const std::vector<std::unique_ptr<Block<2>>> &blocks,
+                  const std::vector<SideFace<2>>               &other_faces,
+                  const std::vector<unsigned int>              &candidates,
+                  const Point<2>                               &x,
+                  const Tensor<1, 2>                           &n,
+                  const double                                  reach)
+    {
+      unsigned int found = numbers::invalid_unsigned_int;
+      double       best  = std::numeric_limits<double>::max();
+      double       eta0  = 0.5;
+      for (const unsigned int c : candidates)
+        {
+          const auto [eta, d] =
+            intersect_line(curve_of(blocks, other_faces[c]), x, n, 0.5);
+          if (eta >= -1e-10 && eta <= 1. + 1e-10 && std::abs(d) <= reach &&
+              std::abs(d) < best)
+            {
+              best  = std::abs(d);
+              found = c;
+              eta0  = eta;
+            }
+        }
+      return {found, eta0};
+    }
+
+    /**
+     * Gauss's rule of @p n_points on the segment [xi0, xi1] of a face's
+     * unit interval.
+     */
+    Quadrature<1>
+    segment_rule(const double       xi0,
+                 const double       xi1,
+                 const unsigned int n_points)
+    {
+      const QGauss<1>       gauss(n_points);
+      std::vector<Point<1>> xi;
+      std::vector<double>   w;
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        {
+          xi.emplace_back(xi0 + (xi1 - xi0) * gauss.point(q)[0]);
+          w.push_back((xi1 - xi0) * gauss.weight(q));
+        }
+      return Quadrature<1>(xi, w);
+    }
+
+    /**
+     * Across a curved gap the common normal at @p point (whose point and
+     * normal are @p x and @p n) may reach a neighbour of face @p found:
+     * the first candidate it does reach within @p reach gets the point as
+     * an overlap of its own.
+     */
+    void
+    overlap_on_neighbour_2d(
+      const std::vector<std::unique_ptr<Block<2>>> &blocks,
+      const std::vector<SideFace<2>>               &other_faces,
+      const std::vector<unsigned int>              &candidates,
+      const unsigned int                            found,
+      const OverlapPoint<2>                        &point,
+      const Point<2>                               &x,
+      const Tensor<1, 2>                           &n,
+      const double                                  reach,
+      std::vector<std::pair<unsigned int, std::vector<OverlapPoint<2>>>>
+        &overlaps)
+    {
+      for (const unsigned int c : candidates)
+        if (c != found)
+          {
+            const FaceCurve curve = curve_of(blocks, other_faces[c]);
+            const auto [eta_c, d_c, direction_c] =
+              facing_point(curve, x, n, 0.5);
+            if (eta_c >= -1e-10 && eta_c <= 1. + 1e-10)
+              {
+                if (std::abs(d_c) <= reach)
+                  overlaps.emplace_back(c,
+                                        std::vector<OverlapPoint<2>>{
+                                          {point.unit,
+                                           point.weight,
+                                           direction_c,
+                                           curve.unit(eta_c),
+                                           d_c}});
+                return;
+              }
+          }
+    }
+
     /**
      * 2D: the overlap of face @p s of the multiplier side with face @p o of
      * the other side, as Gauss points on the segments of s between the
@@ -530,101 +629,53 @@ namespace mbfem
             continue;
           // The other side's face this segment faces: the nearest one
           // whose curve the normal at the segment's middle meets.
-          const double       middle = 0.5 * (xi0 + xi1);
-          const Point<2>     x      = s_curve.point(middle);
-          const Tensor<1, 2> n      = s_curve.normal(middle);
-          unsigned int       found  = numbers::invalid_unsigned_int;
-          double             best   = std::numeric_limits<double>::max();
-          double             eta0   = 0.5;
-          for (const unsigned int c : candidates)
-            {
-              const Block<2> &other = *blocks[other_faces[c].block];
-              const FaceCurve o_curve{other.get_mapping(),
-                                      other_faces[c].cell,
-                                      other_faces[c].face,
-                                      other_faces[c].normal};
-              const auto [eta, d] = intersect_line(o_curve, x, n, 0.5);
-              if (eta >= -1e-10 && eta <= 1. + 1e-10 && std::abs(d) <= reach &&
-                  std::abs(d) < best)
-                {
-                  best  = std::abs(d);
-                  found = c;
-                  eta0  = eta;
-                }
-            }
+          const double middle      = 0.5 * (xi0 + xi1);
+          const auto [found, eta0] = faced_face_2d(blocks,
+                                                   other_faces,
+                                                   candidates,
+                                                   s_curve.point(middle),
+                                                   s_curve.normal(middle),
+                                                   reach);
           if (found == numbers::invalid_unsigned_int)
             continue;
           const Block<2> &other = *blocks[other_faces[found].block];
           // Exact for the polynomial integrand of straight faces; curved
           // ones get the same rule, with room to spare.
-          const QGauss<1> gauss(side.get_fe().degree + other.get_fe().degree +
-                                3);
-
-          std::vector<Point<1>> xi;
-          std::vector<double>   w;
-          for (unsigned int q = 0; q < gauss.size(); ++q)
-            {
-              xi.emplace_back(xi0 + (xi1 - xi0) * gauss.point(q)[0]);
-              w.push_back((xi1 - xi0) * gauss.weight(q));
-            }
-          const Quadrature<1> segment(xi, w);
-          FEFaceValues<2>     values(side.get_mapping(),
+          const Quadrature<1> segment =
+            segment_rule(xi0,
+                         xi1,
+                         side.get_fe().degree + other.get_fe().degree + 3);
+          FEFaceValues<2> values(side.get_mapping(),
                                  side.get_fe(),
                                  segment,
                                  update_JxW_values | update_normal_vectors |
                                    update_quadrature_points);
           values.reinit(s.cell, s.face);
-          const FaceCurve              o_curve{other.get_mapping(),
-                                  other_faces[found].cell,
-                                  other_faces[found].face,
-                                  other_faces[found].normal};
+          const FaceCurve o_curve = curve_of(blocks, other_faces[found]);
           std::vector<OverlapPoint<2>> points;
           for (const unsigned int q : values.quadrature_point_indices())
             {
+              const Point<2>     x = values.quadrature_point(q);
+              const Tensor<1, 2> n = values.normal_vector(q);
               const auto [eta, d, direction] =
-                facing_point(o_curve,
-                             values.quadrature_point(q),
-                             values.normal_vector(q),
-                             eta0);
-              const OverlapPoint<2> point{s_curve.unit(xi[q][0]),
+                facing_point(o_curve, x, n, eta0);
+              const OverlapPoint<2> point{s_curve.unit(segment.point(q)[0]),
                                           values.JxW(q),
                                           direction,
                                           o_curve.unit(eta),
                                           d};
-              if (eta >= -1e-10 && eta <= 1. + 1e-10)
-                {
-                  if (std::abs(d) <= reach)
-                    points.push_back(point);
-                  continue;
-                }
-              // Across a curved gap the common normal may reach a
-              // neighbour of the face the segment's middle faces.
-              for (const unsigned int c : candidates)
-                if (c != found)
-                  {
-                    const Block<2> &next = *blocks[other_faces[c].block];
-                    const FaceCurve curve{next.get_mapping(),
-                                          other_faces[c].cell,
-                                          other_faces[c].face,
-                                          other_faces[c].normal};
-                    const auto [eta_c, d_c, direction_c] =
-                      facing_point(curve,
-                                   values.quadrature_point(q),
-                                   values.normal_vector(q),
-                                   0.5);
-                    if (eta_c >= -1e-10 && eta_c <= 1. + 1e-10)
-                      {
-                        if (std::abs(d_c) <= reach)
-                          overlaps.emplace_back(c,
-                                                std::vector<OverlapPoint<2>>{
-                                                  {point.unit,
-                                                   point.weight,
-                                                   direction_c,
-                                                   curve.unit(eta_c),
-                                                   d_c}});
-                        break;
-                      }
-                  }
+              if (eta < -1e-10 || eta > 1. + 1e-10)
+                overlap_on_neighbour_2d(blocks,
+                                        other_faces,
+                                        candidates,
+                                        found,
+                                        point,
+                                        x,
+                                        n,
+                                        reach,
+                                        overlaps);
+              else if (std::abs(d) <= reach)
+                points.push_back(point);
             }
           overlaps.emplace_back(found, std::move(points));
         }
@@ -918,6 +969,62 @@ namespace mbfem
       pair.area = j.area;
       return true;
     }
+    /**
+     * The side (0 or 1) of @p faces whose nodes carry the multipliers: the
+     * one with fewer distinct nodes (a node shared by several faces counts
+     * once), or more with @p on_finer_side; side 0 where both have as many.
+     */
+    template <int dim>
+    unsigned int
+    multiplier_side(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
+                    const std::vector<SideFace<dim>> (&faces)[2],
+                    const bool on_finer_side)
+    {
+      unsigned int n_nodes[2] = {0, 0};
+      for (unsigned int s = 0; s < 2; ++s)
+        {
+          std::set<std::pair<unsigned int, types::global_dof_index>> distinct;
+          for (const auto &face : faces[s])
+            for (const auto &node : face_nodes(*blocks[face.block], face))
+              distinct.emplace(face.block, node.dofs[0]);
+          n_nodes[s] = distinct.size();
+        }
+      return n_nodes[0] == n_nodes[1] ?
+               0 :
+               ((n_nodes[1] > n_nodes[0]) == on_finer_side ? 1 : 0);
+    }
+
+    /**
+     * The multipliers of the nodes @p nodes of a face of block @p block:
+     * each node's index in @p multipliers, added there the first time a
+     * face names it (@p index: by block and first DoF).
+     */
+    template <int dim, typename Node>
+    std::vector<unsigned int>
+    add_multipliers(const unsigned int            block,
+                    const std::vector<Node>      &nodes,
+                    std::map<std::pair<unsigned int, types::global_dof_index>,
+                             unsigned int>       &index,
+                    std::vector<Multiplier<dim>> &multipliers)
+    {
+      std::vector<unsigned int> of_face;
+      for (const auto &node : nodes)
+        {
+          const auto [it, inserted] =
+            index.emplace(std::make_pair(block, node.dofs[0]),
+                          multipliers.size());
+          if (inserted)
+            {
+              Multiplier<dim> multiplier;
+              multiplier.block = block;
+              multiplier.dofs  = node.dofs;
+              multiplier.point = node.point;
+              multipliers.push_back(multiplier);
+            }
+          of_face.push_back(it->second);
+        }
+      return of_face;
+    }
   } // namespace
 
 
@@ -937,45 +1044,18 @@ namespace mbfem
       collect_faces(blocks, declaration, 1)};
     // The multipliers live on the coarser side (or the finer one): the
     // measurements behind the choice are in doc/mortar.md.
-    // Distinct nodes: a node shared by several faces counts once.
-    unsigned int n_nodes[2] = {0, 0};
-    for (unsigned int s = 0; s < 2; ++s)
-      {
-        std::set<std::pair<unsigned int, types::global_dof_index>> distinct;
-        for (const auto &face : faces[s])
-          for (const auto &node : face_nodes(*blocks[face.block], face))
-            distinct.emplace(face.block, node.dofs[0]);
-        n_nodes[s] = distinct.size();
-      }
-    const unsigned int side =
-      (n_nodes[0] == n_nodes[1] ?
-         0 :
-         ((n_nodes[1] > n_nodes[0]) == on_finer_side ? 1 : 0));
-    const auto &own = faces[side], &other = faces[1 - side];
+    const unsigned int side = multiplier_side(blocks, faces, on_finer_side);
+    const auto        &own = faces[side], &other = faces[1 - side];
 
     std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int>
                                  index;
     std::vector<Multiplier<dim>> multipliers;
     for (const auto &s : own)
       {
-        const Block<dim>         &block = *blocks[s.block];
-        const auto                nodes = face_nodes(block, s);
-        std::vector<unsigned int> of_face;
-        for (const auto &node : nodes)
-          {
-            const auto [it, inserted] =
-              index.emplace(std::make_pair(s.block, node.dofs[0]),
-                            multipliers.size());
-            if (inserted)
-              {
-                Multiplier<dim> multiplier;
-                multiplier.block = s.block;
-                multiplier.dofs  = node.dofs;
-                multiplier.point = node.point;
-                multipliers.push_back(multiplier);
-              }
-            of_face.push_back(it->second);
-          }
+        const Block<dim>               &block = *blocks[s.block];
+        const auto                      nodes = face_nodes(block, s);
+        const std::vector<unsigned int> of_face =
+          add_multipliers(s.block, nodes, index, multipliers);
         double             measure = 0.;
         FullMatrix<double> dual =
           dual_basis(block, s, nodes, of_face, multipliers, measure);

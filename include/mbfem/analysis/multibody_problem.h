@@ -129,6 +129,15 @@ namespace mbfem
     void
     make_contact();
 
+    /** Each configuration's water in the joints, where 'Water pressure' has
+     * some. */
+    void
+    make_water();
+
+    /** The screen line of the contact formulation(s) of @p n_pairs pairs. */
+    void
+    print_formulation(const unsigned int n_pairs) const;
+
     /**
      * Models whose stages add or remove blocks or switch interfaces on:
      * the refusals (the monolithic reference, plasticity, an in-situ
@@ -205,6 +214,25 @@ namespace mbfem
      */
     void
     do_increment(const unsigned int k);
+
+    /**
+     * Increment @p k's files of the contact pairs (CSV, the summary, the
+     * contact problem if asked for); the name of the pairs' VTU file.
+     */
+    std::string
+    write_contact_files(const unsigned int k,
+                        const double       time,
+                        const unsigned int iterations,
+                        const unsigned int reference_iterations);
+
+    /**
+     * Increment @p k's VTU files of the blocks present at @p time (each
+     * rank its own), indexed with @p pair_file in the PVD files.
+     */
+    void
+    write_blocks(const unsigned int k,
+                 const double       time,
+                 const std::string &pair_file);
 
     void
     print_plasticity(const unsigned int   plastic_iterations,
@@ -320,6 +348,24 @@ namespace mbfem
      */
     void
     update_tangent_stiffness();
+
+    /**
+     * Every block's load at @p time (with the water and the forces
+     * released by removed blocks), and with @p condensed its solution
+     * without contact forces; on every rank with @p loads_everywhere.
+     */
+    void
+    assemble_loads(const double time,
+                   const bool   condensed,
+                   const bool   loads_everywhere);
+
+    /**
+     * Every block's displacement from the contact forces just found:
+     * @p condensed: solved again with them and the floating amplitudes;
+     * else the monolithic system's.
+     */
+    void
+    recover_fields(const bool condensed);
 
     /**
      * One pass through increment @p k: every block's load and (condensed)

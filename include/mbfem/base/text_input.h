@@ -1,7 +1,10 @@
 #ifndef mbfem_base_text_input_h
 #define mbfem_base_text_input_h
 
+#include <deal.II/base/types.h>
+
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -53,6 +56,42 @@ namespace mbfem
                   const std::string &where,
                   const unsigned int min,
                   const unsigned int max);
+
+  /** @name Checks of parameter text that every area uses */
+  /** @{ */
+
+  /**
+   * The 'Function constants' entry of a ParsedFunction ('P=1, D=2'):
+   * every name must be a name muparser accepts and not one of the
+   * function's variables, every value one finite number. deal.II reads
+   * the first number of the text ('2/3' becomes 2) and accepts inf and
+   * nan; muparser rejects a bad name with an exception that is no
+   * std::exception ('unknown error').
+   */
+  void
+  check_function_constants(const std::string &constants,
+                           const std::string &variables,
+                           const std::string &where);
+
+  /**
+   * The 'Variable names' entry of a ParsedFunction in @p dim dimensions:
+   * @p dim names of coordinates and optionally one of time, each a name
+   * muparser accepts, none twice.
+   */
+  void
+  check_variable_names(const std::string &variables,
+                       const unsigned int dim,
+                       const std::string &where);
+
+  /**
+   * @p id, named in the entry @p entry, is one of the boundary ids
+   * @p present, or the error lists them.
+   */
+  void
+  check_boundary_id(const dealii::types::boundary_id            id,
+                    const std::string                          &entry,
+                    const std::set<dealii::types::boundary_id> &present);
+  /** @} */
 } // namespace mbfem
 
 #endif

@@ -4,10 +4,10 @@
 #include <mbfem/block/boundary_conditions.h>
 #include <mbfem/block/flexibility.h>
 #include <mbfem/block/floating_modes.h>
+#include <mbfem/block/plastic_state.h>
 #include <mbfem/linear_algebra/direct_solver.h>
 #include <mbfem/material/in_situ_stress.h>
 #include <mbfem/material/material.h>
-#include <mbfem/material/plastic_state.h>
 #include <mbfem/material/plasticity.h>
 #include <mbfem/mesh/mesh.h>
 

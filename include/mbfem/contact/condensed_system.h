@@ -2,6 +2,7 @@
 #define mbfem_contact_condensed_system_h
 
 #include <mbfem/block/block.h>
+#include <mbfem/contact/contact_solver_parameters.h>
 #include <mbfem/contact/interface_system.h>
 #include <mbfem/contact/rigid_coupling.h>
 #include <mbfem/interface/contact_interface.h>
@@ -43,9 +44,9 @@ namespace mbfem
      * The system of @p pairs, whose floating modes @p coupling describes;
      * both must outlive it (ContactSolver owns all three).
      */
-    CondensedSystem(const std::vector<ContactPair<dim>> &pairs,
-                    const RigidCoupling<dim>            &coupling,
-                    const ContactParameters::StateSystem state_system);
+    CondensedSystem(const std::vector<ContactPair<dim>>       &pairs,
+                    const RigidCoupling<dim>                  &coupling,
+                    const ContactSolverParameters::StateSystem state_system);
 
     /**
      * C_hat from every block's factorisation (Block::flexibility()),
@@ -104,7 +105,7 @@ namespace mbfem
      */
     void
     set_flexibility_columns(
-      const ContactParameters::FlexibilityColumns columns);
+      const ContactSolverParameters::FlexibilityColumns columns);
 
     /**
      * The contact DoFs of block @p b among @p pairs: those of the nodes of
@@ -121,9 +122,9 @@ namespace mbfem
      * (Block::set_flexibility_on_demand()).
      */
     static bool
-    is_on_demand(const Block<dim>                           &block,
-                 const std::size_t                           n_contact_dofs,
-                 const ContactParameters::FlexibilityColumns columns);
+    is_on_demand(const Block<dim> &block,
+                 const std::size_t n_contact_dofs,
+                 const ContactSolverParameters::FlexibilityColumns columns);
 
     /** Whether every side of pair @p k is on a block on demand. */
     bool
@@ -433,12 +434,12 @@ namespace mbfem
     void
     estimate_condition(Factorisation &system, const double norm) const;
 
-    const std::vector<ContactPair<dim>>  &pairs;
-    const RigidCoupling<dim>             &coupling;
-    const unsigned int                    n_pairs;
-    const ContactParameters::StateSystem  state_system;
-    ContactParameters::FlexibilityColumns flexibility_columns =
-      ContactParameters::FlexibilityColumns::automatic;
+    const std::vector<ContactPair<dim>>        &pairs;
+    const RigidCoupling<dim>                   &coupling;
+    const unsigned int                          n_pairs;
+    const ContactSolverParameters::StateSystem  state_system;
+    ContactSolverParameters::FlexibilityColumns flexibility_columns =
+      ContactSolverParameters::FlexibilityColumns::automatic;
 
     std::vector<BlockFlexibility> block_flexibility;
     /** For each pair, its sides: (index into block_flexibility, side). */

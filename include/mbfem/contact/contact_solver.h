@@ -4,6 +4,7 @@
 #include <mbfem/block/block.h>
 #include <mbfem/contact/condensed_system.h>
 #include <mbfem/contact/contact_problem.h>
+#include <mbfem/contact/contact_solver_parameters.h>
 #include <mbfem/contact/contact_state.h>
 #include <mbfem/contact/fast_iteration.h>
 #include <mbfem/contact/interface_system.h>
@@ -116,8 +117,8 @@ namespace mbfem
       const unsigned int            max_iterations,
       const ContactFormulation      formulation = ContactFormulation::condensed,
       const std::string            &solver_package = "Amesos_Klu",
-      const ContactParameters::StateSystem state_system =
-        ContactParameters::StateSystem::automatic);
+      const ContactSolverParameters::StateSystem state_system =
+        ContactSolverParameters::StateSystem::automatic);
 
     ContactSolver(const ContactSolver &) = delete;
     ContactSolver &
@@ -203,7 +204,7 @@ namespace mbfem
      */
     void
     set_flexibility_columns(
-      const ContactParameters::FlexibilityColumns columns);
+      const ContactSolverParameters::FlexibilityColumns columns);
 
     /** Accepts the converged increment as the start of the next one. */
     void

@@ -2,7 +2,6 @@
 #define mbfem_interface_contact_interface_h
 
 #include <mbfem/block/block.h>
-#include <mbfem/contact/state_method.h>
 #include <mbfem/interface/joint_law.h>
 #include <mbfem/interface/joint_sets.h>
 
@@ -72,57 +71,6 @@ namespace mbfem
     {
       return all_shared_faces || !interfaces.empty();
     }
-    unsigned int max_iterations = 100;
-    /** Which formulations run (see the entry's text). */
-    enum class Formulation : unsigned char
-    {
-      condensed,
-      monolithic,
-      both
-    };
-    Formulation formulation = Formulation::condensed;
-
-    /**
-     * How the condensed state system is factorised: dense LU (LAPACK) or
-     * sparse LU (UMFPACK), or chosen by its size and fill (see the entry).
-     */
-    enum class StateSystem : unsigned char
-    {
-      automatic,
-      dense,
-      sparse
-    };
-    StateSystem state_system = StateSystem::automatic;
-
-    /**
-     * Whether a block's flexibility is computed whole at the start or
-     * column by column as pairs close (see the entry).
-     */
-    enum class FlexibilityColumns : unsigned char
-    {
-      automatic,
-      whole,
-      on_demand
-    };
-    FlexibilityColumns flexibility_columns = FlexibilityColumns::automatic;
-
-    /** The methods of the state iteration and their limits. */
-    StateMethodParameters state_method;
-
-    /** Whether the condensed (multi-body) formulation runs. */
-    bool
-    runs_condensed() const
-    {
-      return formulation != Formulation::monolithic;
-    }
-
-    /** Whether the monolithic reference runs. */
-    bool
-    runs_monolithic() const
-    {
-      return formulation != Formulation::condensed;
-    }
-
     /** Closed-form contact tractions to measure the pairs against. */
     bool compute_traction_errors = false;
     std::shared_ptr<Functions::ParsedFunction<2>> exact_normal_traction;

@@ -1,5 +1,5 @@
+#include <mbfem/analysis/parameters.h>
 #include <mbfem/base/exceptions.h>
-#include <mbfem/base/parameters.h>
 
 #include <deal.II/base/utilities.h>
 
@@ -64,6 +64,7 @@ namespace mbfem
     OutputParameters::declare_parameters(prm);
     OrderStudyParameters::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
+    ContactSolverParameters::declare_parameters(prm);
     InSituStress::declare_parameters(prm);
     Excavation::declare_parameters(prm);
     PlasticityParameters::declare_parameters(prm);
@@ -90,6 +91,7 @@ namespace mbfem
     output.parse_parameters(prm);
     order_study.parse_parameters(prm);
     contact.parse_parameters(prm);
+    contact_solver.parse_parameters(prm);
     in_situ_stress.parse_parameters(prm);
     excavation.parse_parameters(prm);
     plasticity.parse_parameters(prm);
@@ -105,16 +107,16 @@ namespace mbfem
                            "strength, but the model declares no contact "
                            "interface (Contact/Interfaces)."));
     AssertThrow(run.mode != "strength reduction" ||
-                  contact.formulation ==
-                    ContactParameters::Formulation::condensed,
+                  contact_solver.formulation ==
+                    ContactSolverParameters::Formulation::condensed,
                 ExcMessage("Mode = strength reduction runs the condensed "
                            "formulation only: the monolithic one has "
                            "neither the load path nor the Newton method, "
                            "so near the limit it would decide F, not the "
                            "model. Set 'Contact/Formulation = condensed'."));
     AssertThrow(!output.write_contact_problems ||
-                  contact.formulation !=
-                    ContactParameters::Formulation::monolithic,
+                  contact_solver.formulation !=
+                    ContactSolverParameters::Formulation::monolithic,
                 ExcMessage("Output/Write contact problems writes the "
                            "condensed problem, which the monolithic "
                            "formulation does not form. Set "

@@ -1,5 +1,5 @@
 #include <mbfem/block/block.h>
-#include <mbfem/material/plastic_state.h>
+#include <mbfem/block/plastic_state.h>
 
 #include <deal.II/fe/fe_values.h>
 

@@ -1,5 +1,5 @@
-#ifndef mbfem_base_parameters_h
-#define mbfem_base_parameters_h
+#ifndef mbfem_analysis_parameters_h
+#define mbfem_analysis_parameters_h
 
 #include <mbfem/analysis/exact_solution.h>
 #include <mbfem/analysis/load_history.h>
@@ -7,6 +7,7 @@
 #include <mbfem/analysis/strength_reduction.h>
 #include <mbfem/block/block.h>
 #include <mbfem/block/boundary_conditions.h>
+#include <mbfem/contact/contact_solver_parameters.h>
 #include <mbfem/interface/contact_interface.h>
 #include <mbfem/interface/joint_water.h>
 #include <mbfem/linear_algebra/direct_solver.h>
@@ -67,6 +68,7 @@ namespace mbfem
     OutputParameters                       output;
     OrderStudyParameters                   order_study;
     ContactParameters                      contact;
+    ContactSolverParameters                contact_solver;
     InSituStress                           in_situ_stress;
     Excavation                             excavation;
     PlasticityParameters                   plasticity;

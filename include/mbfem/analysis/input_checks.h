@@ -1,7 +1,7 @@
-#ifndef mbfem_base_input_checks_h
-#define mbfem_base_input_checks_h
+#ifndef mbfem_analysis_input_checks_h
+#define mbfem_analysis_input_checks_h
 
-#include <mbfem/base/parameters.h>
+#include <mbfem/analysis/parameters.h>
 #include <mbfem/base/text_input.h>
 #include <mbfem/block/block.h>
 
@@ -28,29 +28,6 @@ namespace mbfem
 
   /** @name Parameter values */
   /** @{ */
-
-  /**
-   * The 'Function constants' entry of a ParsedFunction ('P=1, D=2'):
-   * every name must be a name muparser accepts and not one of the
-   * function's variables, every value one finite number. deal.II reads
-   * the first number of the text ('2/3' becomes 2) and accepts inf and
-   * nan; muparser rejects a bad name with an exception that is no
-   * std::exception ('unknown error').
-   */
-  void
-  check_function_constants(const std::string &constants,
-                           const std::string &variables,
-                           const std::string &where);
-
-  /**
-   * The 'Variable names' entry of a ParsedFunction in @p dim dimensions:
-   * @p dim names of coordinates and optionally one of time, each a name
-   * muparser accepts, none twice.
-   */
-  void
-  check_variable_names(const std::string &variables,
-                       const unsigned int dim,
-                       const std::string &where);
 
   /**
    * Every function of the input (loads, prescribed displacements, body
@@ -80,15 +57,6 @@ namespace mbfem
   void
   check_ids_against_mesh(const Parameters<dim>    &parameters,
                          const Triangulation<dim> &mesh);
-
-  /**
-   * @p id, named in the entry @p entry, is one of the boundary ids
-   * @p present, or the error lists them.
-   */
-  void
-  check_boundary_id(const types::boundary_id            id,
-                    const std::string                  &entry,
-                    const std::set<types::boundary_id> &present);
 
   /**
    * Every point support lies on a support point of some block (within

@@ -1,5 +1,5 @@
-#ifndef mbfem_material_plastic_state_h
-#define mbfem_material_plastic_state_h
+#ifndef mbfem_block_plastic_state_h
+#define mbfem_block_plastic_state_h
 
 #include <mbfem/material/material.h>
 #include <mbfem/material/plasticity.h>
