@@ -71,12 +71,19 @@ namespace mbfem
         return text + "]";
       };
       std::ostringstream json;
-      json << "  \"mu\": " << field([](const Pair &p) { return number(p.mu); })
+      // The law as the linear cone Lemke's method and the scripts solve:
+      // mu, c A and sigma_t A (0 once broken).
+      json << "  \"mu\": " << field([](const Pair &p) {
+        return number(p.joint.slip_line(p.area, p.broken).slope);
+      }) << ",\n"
+           << "  \"cohesion\": " << field([](const Pair &p) {
+                return number(p.joint.slip_line(p.area, p.broken).intercept);
+              })
            << ",\n"
-           << "  \"cohesion\": "
-           << field([](const Pair &p) { return number(p.cohesion); }) << ",\n"
-           << "  \"tension\": "
-           << field([](const Pair &p) { return number(p.tension); }) << ",\n"
+           << "  \"tension\": " << field([](const Pair &p) {
+                return number(p.joint.tensile_limit(p.area, p.broken));
+              })
+           << ",\n"
            << "  \"area\": "
            << field([](const Pair &p) { return number(p.area); }) << ",\n"
            << "  \"point\": "
@@ -206,11 +213,9 @@ namespace mbfem
         data.area         = pair.area;
         data.broken       = trial.broken[k];
         data.tensile_slip = trial.tensile_slip[k];
-        data.mu           = pair.joint.friction_coefficient;
+        data.joint        = pair.joint;
         data.frame        = pair.frame;
-        data.cohesion = pair.joint.shear_strength(0., pair.area, data.broken);
-        data.tension  = pair.joint.tensile_limit(pair.area, data.broken);
-        data.tied     = pair.tied;
+        data.tied         = pair.tied;
         for (unsigned int d = 0; d < dim; ++d)
           data.held[d] = held[k][d];
         data.state = to_string(trial.state[k]);

@@ -246,10 +246,10 @@ namespace mbfem
         const auto        &pair  = contact_pairs[k];
         const ContactState state = trial.state[k];
         // Slip: |r_T| = c A + mu r_N, as the coefficients of r_N and 1.
-        const double mu =
-          trial.tensile_slip[k] ? 0. : pair.joint.friction_coefficient;
-        const double strength_0 =
-          pair.joint.shear_strength(0., pair.area, trial.broken[k]);
+        const JointLaw::SlipLine line =
+          pair.joint.slip_line(pair.area,
+                               trial.broken[k],
+                               trial.tensile_slip[k]);
         for (unsigned int d = 0; d < dim; ++d)
           {
             PairEquation<dim> &eq = equations[k * dim + d];
@@ -271,8 +271,8 @@ namespace mbfem
                 // which is the slip law itself once (I - s s^T) v = 0.
                 const double s           = trial.slip_direction[k][d];
                 eq.force_coefficients[d] = 1.;
-                eq.force_coefficients[0] += mu * s;
-                eq.value          = -strength_0 * s;
+                eq.force_coefficients[0] += line.slope * s;
+                eq.value          = -line.intercept * s;
                 const double beta = trial.direction_stiffness[k];
                 for (unsigned int e = 1; e < dim && beta > 0.; ++e)
                   {

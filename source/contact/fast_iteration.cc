@@ -67,7 +67,7 @@ namespace mbfem
         Trial               next = checks.check(
           trial, solution, displacement, violation, direction_change);
         if (checks.signature(next) == checks.signature(trial) &&
-            direction_change < 1e-6)
+            direction_change < direction_tolerance)
           {
             // The directions the solve used, for condensed_problem(); the
             // trial keeps the updated ones (the next increment's guess).

@@ -243,7 +243,8 @@ namespace mbfem
             v.lambda = next++;
             // The cone's r_N is max(r_N, 0): its own variable where the
             // pair can carry tension.
-            if (v.normal != numbers::invalid_unsigned_int && pair.tension > 0.)
+            if (v.normal != numbers::invalid_unsigned_int &&
+                pair.joint.tensile_limit(pair.area, pair.broken) > 0.)
               v.compression = next++;
           }
       }
@@ -329,7 +330,8 @@ namespace mbfem
         if (v.normal != numbers::invalid_unsigned_int)
           {
             row(0).emplace_back(v.normal, 1.);
-            r0(k * dim) = broken[k] ? 0. : -problem.pairs[k].tension;
+            r0(k * dim) = -problem.pairs[k].joint.tensile_limit(
+              problem.pairs[k].area, problem.pairs[k].broken || broken[k]);
           }
         if (v.shear != numbers::invalid_unsigned_int)
           for (unsigned int j = 0; j < n_directions; ++j)
@@ -419,20 +421,21 @@ namespace mbfem
     // limit r_N = z_N >= 0 already; with one, max(r_N, 0) is the variable
     // p >= 0 against p - z_N + sigma_t A >= 0 (so p = max(z_N - sigma_t A,
     // 0)).
-    const bool   intact = !broken[k];
-    const double t      = intact ? pair.tension : 0.;
+    const bool               gone = pair.broken || broken[k];
+    const double             t    = pair.joint.tensile_limit(pair.area, gone);
+    const JointLaw::SlipLine line = pair.joint.slip_line(pair.area, gone);
     if (v.compression != numbers::invalid_unsigned_int)
       {
         M(v.compression, v.compression) = 1.;
         M(v.compression, v.normal)      = -1.;
         q(v.compression)                = t;
-        M(v.lambda, v.compression) += pair.mu;
+        M(v.lambda, v.compression) += line.slope;
       }
     else if (v.normal != numbers::invalid_unsigned_int)
-      M(v.lambda, v.normal) += pair.mu;
+      M(v.lambda, v.normal) += line.slope;
     for (unsigned int j = 0; j < n_directions; ++j)
       M(v.lambda, v.shear + j) -= 1.;
-    q(v.lambda) = intact ? pair.cohesion : 0.;
+    q(v.lambda) = line.intercept;
   }
 
 
@@ -631,7 +634,9 @@ namespace mbfem
     for (unsigned int k = 0; k < problem.n_pairs; ++k)
       {
         const auto &pair = problem.pairs[k];
-        if (!broken[k] && (pair.cohesion > 0. || pair.tension > 0.) &&
+        const bool  gone = pair.broken || broken[k];
+        if ((pair.joint.slip_line(pair.area, gone).intercept > 0. ||
+             pair.joint.tensile_limit(pair.area, gone) > 0.) &&
             variables[k].normal != numbers::invalid_unsigned_int &&
             u(k * dim) > gap)
           opened.push_back(k);
@@ -689,7 +694,9 @@ namespace mbfem
           }
         const double r_n = r(k * dim);
         const double strength =
-          (trial.broken[k] ? 0. : pair.cohesion) + pair.mu * std::max(r_n, 0.);
+          pair.joint.shear_strength(r_n,
+                                    pair.area,
+                                    pair.broken || trial.broken[k]);
         trial.state[k]               = ContactState::slip;
         trial.slip_direction[k]      = slip / slip.norm();
         trial.tensile_slip[k]        = r_n < -force_tolerance;

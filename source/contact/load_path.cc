@@ -43,12 +43,73 @@ namespace mbfem
      * tolerance.
      */
     constexpr double tolerance = state_tolerance;
+
+    /**
+     * At most 20 switches per pair on one path (plus 100 for few pairs):
+     * each switch changes one pair's state where its condition is reached,
+     * and a path that needs more has met a cycle that the other caps did
+     * not catch ('Contact/Maximum iterations' quotes this).
+     */
+    constexpr unsigned int switches_per_pair = 20, extra_switches = 100;
+    /**
+     * At most 2 switches per pair (plus 50) at one load: the 3D stacked
+     * beams of p = 2 with one refined (369 mortar pairs) made 7480
+     * switches at s below 1e-15 (250 s) before a cap ended them.
+     */
+    constexpr unsigned int switches_per_pair_at_one_load = 2,
+                           extra_switches_at_one_load    = 50;
+    /**
+     * An event more than this beyond the last one (in s, the fraction of
+     * the increment) is at a new load: the states seen at the old one are
+     * forgotten, and the check for a state met twice at one load starts
+     * afresh.
+     */
+    constexpr double new_load = 1e-9;
+    /**
+     * Where the segment's start x_0 or d_0 is over this many times what
+     * the segment holds (a load that cancels the start's), interpolating
+     * s_a loses the digits: s_a is solved for itself.
+     */
+    constexpr double interpolation_headroom = 100.;
+    /**
+     * Newton steps on the 3D slip directions at a segment's start. The
+     * directions settle in a few; after this many the path goes on with
+     * the last ones (the state check at the end decides).
+     */
+    constexpr unsigned int max_direction_steps = 25;
+    /**
+     * A slip increment below this times the segment's displacement scale
+     * has no direction to read (the pair keeps its own).
+     */
+    constexpr double no_slip = 1e-6;
+    /** Bisection steps on a crossing in [0, 1]: 2^-60 is below rounding. */
+    constexpr unsigned int bisection_steps = 60;
+    /**
+     * Where a condition is clearly failed after its crossing (to read the
+     * direction of a new slip there): 1 % of the rest of the segment, at
+     * least 1e-3 of it.
+     */
+    constexpr double failed_beyond = 0.01, failed_beyond_at_least = 1e-3;
+    /**
+     * A motion component below this times the largest is none: a pair
+     * that closes after moving less while open sticks; the mechanism
+     * reverses a pair's slip only beyond it; the first pair to close
+     * slips only if it moves more.
+     */
+    constexpr double negligible_motion = 1e-6;
+    /** The loads do work on a mechanism's motion beyond this (relative). */
+    constexpr double no_work = 1e-8;
+    /**
+     * An open pair closes along a mechanism only head-on enough that the
+     * blocks move at most 100 times its gap (1 / 1e-2): a grazing closure
+     * would be a large rigid motion, beyond the method's small
+     * displacements.
+     */
+    constexpr double head_on = 1e-2;
   } // namespace internal
 
 
-  using internal::Condition;
-  using internal::n_samples;
-  using internal::tolerance;
+  using namespace internal;
 
 
 
@@ -135,9 +196,11 @@ namespace mbfem
     double                s        = 0.;
     unsigned int          switches = 0;
     std::set<std::string> seen_here; // states met at this s
-    const unsigned int    max_switches             = 20 * pairs.size() + 100;
-    const unsigned int    max_switches_at_one_load = 2 * pairs.size() + 50;
-    Segment               segment;
+    const unsigned int    max_switches =
+      switches_per_pair * pairs.size() + extra_switches;
+    const unsigned int max_switches_at_one_load =
+      switches_per_pair_at_one_load * pairs.size() + extra_switches_at_one_load;
+    Segment segment;
     // Every pair's normal gap at the present s (for close_along()).
     std::vector<double> gap(pairs.size());
     for (unsigned int k = 0; k < pairs.size(); ++k)
@@ -159,7 +222,7 @@ namespace mbfem
         if (event.pair == numbers::invalid_unsigned_int)
           break;
         const double s_event = s + event.t * (1. - s);
-        if (s_event > s + 1e-9)
+        if (s_event > s + new_load)
           seen_here.clear();
         s = s_event;
         for (unsigned int k = 0; k < pairs.size(); ++k)
@@ -226,8 +289,8 @@ namespace mbfem
         const auto larger = [](const Vector<double> &a,
                                const Vector<double> &b,
                                const Vector<double> &c) {
-          return a.linfty_norm() >
-                 100. * std::max(b.linfty_norm(), c.linfty_norm());
+          return a.linfty_norm() > interpolation_headroom *
+                                     std::max(b.linfty_norm(), c.linfty_norm());
         };
         if (larger(x_0, segment.x_a, segment.x_1) ||
             larger(d_0, segment.d_a, segment.d_1))
@@ -269,7 +332,8 @@ namespace mbfem
     // at the segment's start, as the fast iteration does (pair_equations):
     // the direction of the slip increment, and the weight of its
     // linearisation (c A + mu r_N) / |slip increment|.
-    for (unsigned int iteration = 0; iteration < 25; ++iteration)
+    for (unsigned int iteration = 0; iteration < max_direction_steps;
+         ++iteration)
       {
         double change = 0.;
         for (unsigned int k = 0; k < pairs.size(); ++k)
@@ -280,7 +344,7 @@ namespace mbfem
             segment.at(k, 0., rho, d);
             for (unsigned int e = 1; e < dim; ++e)
               v[e] = d[e] - committed_displacement[k][e];
-            if (v.norm() < 1e-6 * segment.displacement_scale)
+            if (v.norm() < no_slip * segment.displacement_scale)
               continue;
             const Tensor<1, dim> s = v / v.norm();
             change = std::max(change, (s - trial.slip_direction[k]).norm());
@@ -292,7 +356,7 @@ namespace mbfem
                                             trial.tensile_slip[k]) /
               v.norm();
           }
-        if (change < 1e-6)
+        if (change < direction_tolerance)
           return true;
         if (!solve_segment(trial, segment.s_a, segment))
           return false;
@@ -423,7 +487,7 @@ namespace mbfem
         double crossing = high;
         if (high > 0.)
           {
-            for (unsigned int b = 0; b < 60; ++b)
+            for (unsigned int b = 0; b < bisection_steps; ++b)
               {
                 const double middle = 0.5 * (low + high);
                 if (margin(k, middle).value < 0.)
@@ -441,7 +505,9 @@ namespace mbfem
             // Where the condition is clearly failed: the direction of a
             // new slip, or the slip of a pair that closes, is read there.
             first.t_failed =
-              std::min(1., crossing + std::max(1e-3, 0.01 * (1. - crossing)));
+              std::min(1.,
+                       crossing + std::max(failed_beyond_at_least,
+                                           failed_beyond * (1. - crossing)));
           }
       }
     return first;
@@ -502,7 +568,7 @@ namespace mbfem
           // stick (that would undo the motion): it slips on, in the
           // direction it was moving. One that closes where it opened
           // sticks.
-          if (increment.norm() > 1e-6 * D)
+          if (increment.norm() > negligible_motion * D)
             {
               trial.state[k]               = ContactState::slip;
               trial.slip_direction[k]      = increment / increment.norm();
@@ -560,7 +626,7 @@ namespace mbfem
       }
     unsigned int n_switched = 0;
     for (unsigned int k = 0; k < pairs.size(); ++k)
-      if (along[k] < -1e-6 * largest)
+      if (along[k] < -negligible_motion * largest)
         {
           trial.state[k] = ContactState::stick;
           ++n_switched;
@@ -584,7 +650,7 @@ namespace mbfem
         work += loads.resultant[a] * motion(a);
         load += loads.resultant[a] * loads.resultant[a];
       }
-    if (!(work > 1e-8 * std::sqrt(load) * motion.l2_norm()))
+    if (!(work > no_work * std::sqrt(load) * motion.l2_norm()))
       return false;
     // The relative motion of each open pair along the mechanism, and the
     // amplitude at which it closes its gap.
@@ -607,7 +673,7 @@ namespace mbfem
         // at most 100 times the gap: a grazing closure would be a large
         // rigid motion, beyond the small displacements of the method.
         if (trial.state[k] != ContactState::open || pairs[k].tied ||
-            held[k][0] || !(w[k][0] < -1e-2 * largest))
+            held[k][0] || !(w[k][0] < -head_on * largest))
           continue;
         const double closes = std::max(gap[k], 0.) / -w[k][0];
         if (closes < amplitude)
@@ -625,7 +691,7 @@ namespace mbfem
     Tensor<1, dim> slip;
     for (unsigned int e = 1; e < dim; ++e)
       slip[e] = first_motion[e];
-    if (slip.norm() > 1e-6 * largest && amplitude > 0.)
+    if (slip.norm() > negligible_motion * largest && amplitude > 0.)
       {
         trial.state[first]               = ContactState::slip;
         trial.slip_direction[first]      = slip / slip.norm();

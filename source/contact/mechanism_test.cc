@@ -89,8 +89,12 @@ namespace mbfem
             ++counts[static_cast<int>(trial.state[k])];
             if (trial.state[k] == ContactState::open)
               continue;
-            const double mu =
-              trial.tensile_slip[k] ? 0. : pairs[k].joint.friction_coefficient;
+            const double mu = pairs[k]
+                                .joint
+                                .slip_line(pairs[k].area,
+                                           trial.broken[k],
+                                           trial.tensile_slip[k])
+                                .slope;
             for (unsigned int d = 0; d < dim; ++d)
               {
                 if (held[k][d] ||

@@ -248,8 +248,8 @@ namespace mbfem
   {
     const auto           &pair = pairs[k];
     const unsigned int    r0   = k * dim;
-    const double          mu   = pair.joint.friction_coefficient;
     const double          R    = radius(k, xi, system);
+    const double          dR   = pair.joint.disc_slope(xi);
     const Vector<double> &u = system.u, &d = system.d;
     Vector<double>       &F = system.residual;
 
@@ -289,9 +289,9 @@ namespace mbfem
                 }
             if (xi > 0.)
               {
-                system.add_unit(row, r0, -n[e] * mu);
+                system.add_unit(row, r0, -n[e] * dR);
                 if (xi_has_gap)
-                  system.add_displacement(row, r0, n[e] * mu);
+                  system.add_displacement(row, r0, n[e] * dR);
               }
           }
         else

@@ -478,9 +478,9 @@ namespace mbfem
           tangential += w[k * dim + d] * w[k * dim + d];
         tangential = std::sqrt(tangential);
         // The friction of the LP the duals came from.
-        const double mu =
-          candidates[k].joint.reduced(factor).friction_coefficient;
-        const bool rest = std::abs(w[k * dim]) + tangential <= tolerance;
+        const auto [law, area] = law_of(candidates[k], factor);
+        const double mu   = law.slip_line(area, candidates[k].broken).slope;
+        const bool   rest = std::abs(w[k * dim]) + tangential <= tolerance;
         // (In 3D the polygon's dual cone reaches up to 1 / cos(pi / n)
         // beyond the circle's, between two facets.)
         const double polygon =

@@ -1,6 +1,8 @@
 #ifndef mbfem_contact_contact_problem_h
 #define mbfem_contact_contact_problem_h
 
+#include <mbfem/interface/joint_law.h>
+
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
@@ -38,12 +40,10 @@ namespace mbfem
     {
       Point<dim> point;
       double     area = 0.;
-      /** The joint's friction coefficient (a tensile slip uses none). */
-      double mu = 0.;
+      /** The pair's joint law (written as mu, c A and sigma_t A). */
+      JointLaw joint;
       /** Rows: the normal, then the tangents (the global axes if tied). */
-      Tensor<2, dim> frame;
-      /** c A and sigma_t A (forces), 0 once broken. */
-      double                cohesion = 0., tension = 0.;
+      Tensor<2, dim>        frame;
       bool                  broken = false, tensile_slip = false, tied = false;
       std::array<bool, dim> held{};
       std::string           state;

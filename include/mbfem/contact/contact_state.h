@@ -31,6 +31,14 @@ namespace mbfem
   constexpr double state_tolerance = 1e-9;
 
   /**
+   * 3D slip directions have settled when none turned by more than this
+   * (the norm of the change of a unit vector, about the angle in radians)
+   * in the last solve: the fast iteration's and the load path's Newton
+   * step on the directions stop there.
+   */
+  constexpr double direction_tolerance = 1e-6;
+
+  /**
    * The states of every pair that a step of the state iteration assumes,
    * with what the joint law needs besides: whether a joint has broken,
    * slips in tension (no friction), and in 3D the slip direction and its

@@ -105,6 +105,30 @@ namespace mbfem
       return friction_margin(r_n, r_t, area, broken) < -tolerance;
     }
 
+    /** The line |r_T| = intercept + slope r_N of slip_line(). */
+    struct SlipLine
+    {
+      double slope     = 0.;
+      double intercept = 0.;
+    };
+
+    /**
+     * The line |r_T| = c A + mu r_N along which a slipping pair's forces
+     * move, for the linear rows of the state iteration, the mechanism
+     * test, the certificate's dual cone and Lemke's tableau: no cohesion
+     * once @p broken, no friction where the pair slips in tension
+     * (@p tensile). A curved law gives its tangent here (and states so):
+     * those rows are linear in r_N.
+     */
+    SlipLine
+    slip_line(const double area,
+              const bool   broken,
+              const bool   tensile = false) const
+    {
+      return {tensile ? 0. : friction_coefficient,
+              shear_strength(0., area, broken)};
+    }
+
     /**
      * The friction disc of the semismooth Newton method (Alart and
      * Curnier's form), in its units, where a force is @p scale times
@@ -120,6 +144,16 @@ namespace mbfem
     {
       return scale * (cohesive ? shear_strength(0., area, false) : 0.) +
              friction_coefficient * std::max(xi, 0.);
+    }
+
+    /**
+     * d disc_radius() / d xi: the Newton Jacobian's term of a slipping
+     * pair's normal force (mu where xi > 0, else 0).
+     */
+    double
+    disc_slope(const double xi) const
+    {
+      return xi > 0. ? friction_coefficient : 0.;
     }
 
     /**
