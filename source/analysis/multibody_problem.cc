@@ -33,6 +33,7 @@ namespace mbfem
     // Summary printed at the end of a run that finished, not on the way
     // out of one that failed.
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    , comparison(parameters.run.test_mode)
   {}
 
 
@@ -680,7 +681,7 @@ namespace mbfem
                               parameters.contact,
                               screen->detail("interfaces"));
     if (reference)
-      print_comparison_summary();
+      comparison.print_summary(pcout);
     if (contact && !parameters.run.test_mode)
       print_formulation_times();
     const LoadHistory &history = parameters.load_history;
@@ -853,25 +854,6 @@ namespace mbfem
       throw Exceptions::ExcIncrementNotConverged(text.str());
     }
   } // namespace
-
-
-
-  template <int dim>
-  void
-  MultiBodyProblem<dim>::print_comparison_summary() const
-  {
-    const bool agree =
-      state_differences == 0 && largest_force_difference <= 1e-6 &&
-      largest_gap_difference <= 1e-6 && largest_slip_difference <= 1e-6;
-    pcout << "  condensed against monolithic over all increments: "
-          << "states equal at every increment "
-          << (state_differences == 0 ? "yes" : "NO")
-          << "; largest differences (relative): forces "
-          << format_difference(largest_force_difference) << ", gaps "
-          << format_difference(largest_gap_difference) << ", slips "
-          << format_difference(largest_slip_difference) << "; within 1e-6 "
-          << (agree ? "yes" : "NO") << "\n";
-  }
 
 
 
@@ -1436,69 +1418,14 @@ namespace mbfem
 
 
   template <int dim>
-  std::string
-  MultiBodyProblem<dim>::format_difference(const double e) const
-  {
-    std::ostringstream s;
-    if (e < 1e-9 && parameters.run.test_mode)
-      s << "below 1e-9";
-    else
-      s << std::scientific << std::setprecision(2) << e;
-    return s.str();
-  }
-
-
-
-  template <int dim>
   void
   MultiBodyProblem<dim>::compare_formulations()
   {
-    // Forces relative to the largest pair force; gaps and slips relative to
-    // the largest displacement of the model (while all pairs stick, gaps
-    // and slips are round-off of zero and cannot be their own scale).
-    const unsigned int n_pairs     = contact->pairs().size();
-    double             force_scale = 1e-300, displacement_scale = 1e-300;
-    for (unsigned int i = 0; i < n_pairs; ++i)
-      force_scale = std::max(force_scale, contact->local_force(i).norm());
+    double displacement_scale = 1e-300;
     for (const auto &block : blocks)
       displacement_scale =
         std::max(displacement_scale, max_displacement(*block));
-    double       force = 0., gap = 0., slip = 0.;
-    unsigned int differ = 0;
-    for (unsigned int i = 0; i < n_pairs; ++i)
-      {
-        if (contact->state(i) != reference->state(i) ||
-            contact->broken(i) != reference->broken(i))
-          ++differ;
-        force = std::max(
-          force,
-          (contact->local_force(i) - reference->local_force(i)).norm() /
-            force_scale);
-        gap  = std::max(gap,
-                       std::abs(contact->gap(i) - reference->gap(i)) /
-                         displacement_scale);
-        slip = std::max(slip,
-                        (contact->slip(i) - reference->slip(i)).norm() /
-                          displacement_scale);
-      }
-    largest_force_difference = std::max(largest_force_difference, force);
-    largest_gap_difference   = std::max(largest_gap_difference, gap);
-    largest_slip_difference  = std::max(largest_slip_difference, slip);
-    state_differences += differ;
-    last_comparison = {{static_cast<double>(differ), force, gap, slip}};
-
-    // Round-off differences vary by machine: below 1e-9 they are printed as
-    // such, so that the tests compare what matters.
-    const auto difference = [this](const double e) {
-      return format_difference(e);
-    };
-    pcout << "    monolithic reference: stick/slip/open "
-          << reference->count(ContactState::stick) << "/"
-          << reference->count(ContactState::slip) << "/"
-          << reference->count(ContactState::open) << ", states differ at "
-          << differ << " of " << n_pairs << " pairs; differences (relative) "
-          << "forces " << difference(force) << ", gaps " << difference(gap)
-          << ", slips " << difference(slip) << "\n";
+    comparison.compare(*contact, *reference, displacement_scale, pcout);
   }
 
 
@@ -1570,10 +1497,10 @@ namespace mbfem
                       ",%u,%.4f,%u,%.3e,%.3e,%.3e",
                       reference_iterations,
                       last_reference_seconds,
-                      static_cast<unsigned int>(last_comparison[0]),
-                      last_comparison[1],
-                      last_comparison[2],
-                      last_comparison[3]);
+                      static_cast<unsigned int>(comparison.last()[0]),
+                      comparison.last()[1],
+                      comparison.last()[2],
+                      comparison.last()[3]);
         summary_csv += buffer;
       }
     const LoadHistory &history = parameters.load_history;

@@ -1,6 +1,7 @@
 #ifndef mbfem_analysis_multibody_problem_h
 #define mbfem_analysis_multibody_problem_h
 
+#include <mbfem/analysis/formulation_comparison.h>
 #include <mbfem/analysis/strength_reduction.h>
 #include <mbfem/block/block.h>
 #include <mbfem/contact/contact_solver.h>
@@ -242,10 +243,6 @@ namespace mbfem
     void
     print_run_summary();
 
-    /** Formulation "both": the comparison over all increments. */
-    void
-    print_comparison_summary() const;
-
     void
     print_formulation_times() const;
 
@@ -398,13 +395,6 @@ namespace mbfem
     void
     compare_formulations();
 
-    /**
-     * A relative difference for the screen; in test mode, round-off (below
-     * 1e-9), whose digits vary by machine, as "below 1e-9".
-     */
-    std::string
-    format_difference(const double e) const;
-
     /** One line per increment in <base>-summary.csv (rewritten whole). */
     void
     write_summary(const unsigned int k,
@@ -539,13 +529,8 @@ namespace mbfem
     /** Steps in which Newton gave way to the initial-stress method. */
     unsigned int newton_suspensions = 0;
 
-    /** Largest differences (relative) over the increments, "both". */
-    double       largest_force_difference = 0.;
-    double       largest_gap_difference   = 0.;
-    double       largest_slip_difference  = 0.;
-    unsigned int state_differences        = 0;
-    /** What this increment's comparison found, for the summary CSV. */
-    std::array<double, 4> last_comparison      = {{0., 0., 0., 0.}};
+    /** 'Formulation = both': the condensed against the monolithic. */
+    FormulationComparison comparison;
     double                last_contact_seconds = 0.;
     /** The contact time of all passes and steps of this increment. */
     double      increment_contact_seconds = 0.;
