@@ -1487,7 +1487,7 @@ namespace mbfem
     summary_csv += buffer;
     // Which method concluded the state iteration, and its share of the
     // iterations (doc/state_iteration.md).
-    summary_csv += "," + to_string(contact->last_method()) + "," +
+    summary_csv += "," + contact->last_method() + "," +
                    std::to_string(contact->last_iterations().first) + "," +
                    std::to_string(contact->last_iterations().second);
     if (reference)
@@ -1553,9 +1553,9 @@ namespace mbfem
         // the fast iteration did not (the screen lines of the increments
         // it concludes stay as they were).
         pcout << iterations << " iteration(s)";
-        if (contact->last_method() != StateMethod::fast)
+        if (contact->last_method() != "fast")
           pcout << " (fast " << contact->last_iterations().first << ", "
-                << to_string(contact->last_method()) << " "
+                << contact->last_method() << " "
                 << contact->last_iterations().second << ")";
         if (!parameters.run.test_mode)
           pcout << " in " << std::setprecision(3) << increment_contact_seconds

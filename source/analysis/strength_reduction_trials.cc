@@ -151,7 +151,7 @@ namespace mbfem
           {
             do_increment(k);
             ++trial.increments;
-            methods.insert(to_string(contact->last_method()));
+            methods.insert(contact->last_method());
             trial.iterations += contact->last_iterations().first +
                                 contact->last_iterations().second;
             trial.largest_displacement = 0.;

@@ -190,7 +190,7 @@ namespace mbfem
     current              = committed;
     current_displacement = committed_displacement;
     current_solution.reinit(0);
-    method          = StateMethod::fast;
+    method          = "fast";
     fast_iterations = 0;
     path_switches   = 0;
     path_broken.clear();
@@ -296,7 +296,7 @@ namespace mbfem
                                   Vector<double> &displacement)
   {
     const std::vector<PairEquation<dim>> equations = pair_equations(trial);
-    progress.step(to_string(method), count_states(trial));
+    progress.step(method, count_states(trial));
     // Monolithic: a block the states cannot hold makes the whole system
     // singular; say so before a sparse LU returns noise.
     if (monolithic && !mechanisms.unheld_blocks(trial).empty())
@@ -775,7 +775,7 @@ namespace mbfem
 
 
   template <int dim>
-  StateMethod
+  const std::string &
   ContactSolver<dim>::last_method() const
   {
     return method;

@@ -10,33 +10,16 @@ namespace mbfem
 {
   namespace
   {
-    const std::vector<StateMethod> all_methods = {
-      StateMethod::fast,
-      StateMethod::load_path,
-      StateMethod::semismooth_newton,
-      StateMethod::lemke,
-      StateMethod::load_continuation};
+    /** The registry's names (the same in 2D and 3D: one list). */
+    std::vector<std::string>
+    all_names()
+    {
+      std::vector<std::string> names;
+      for (const auto &entry : registered_state_methods<2>())
+        names.push_back(entry.name);
+      return names;
+    }
   } // namespace
-
-
-
-  std::string
-  to_string(const StateMethod method)
-  {
-    switch (method)
-      {
-        case StateMethod::fast:
-          return "fast";
-        case StateMethod::load_path:
-          return "load path";
-        case StateMethod::semismooth_newton:
-          return "semismooth Newton";
-        case StateMethod::lemke:
-          return "Lemke";
-        default:
-          return "load continuation";
-      }
-  }
 
 
 
@@ -44,33 +27,29 @@ namespace mbfem
   state_method_names()
   {
     std::string names;
-    for (const StateMethod method : all_methods)
-      names += (names.empty() ? "" : "|") + to_string(method);
+    for (const std::string &name : all_names())
+      names += (names.empty() ? "" : "|") + name;
     return names;
   }
 
 
 
-  std::vector<StateMethod>
+  std::vector<std::string>
   parse_state_methods(const std::string &text)
   {
-    std::vector<StateMethod> methods;
+    const std::vector<std::string> known = all_names();
+    std::vector<std::string>       methods;
     for (const std::string &name : dealii::Utilities::split_string_list(text))
       {
-        const auto method = std::find_if(all_methods.begin(),
-                                         all_methods.end(),
-                                         [&](const StateMethod m) {
-                                           return to_string(m) == name;
-                                         });
-        AssertThrow(method != all_methods.end(),
+        AssertThrow(std::find(known.begin(), known.end(), name) != known.end(),
                     dealii::ExcMessage("Contact/State method: '" + name +
                                        "' is not a method; the methods are " +
                                        state_method_names() + "."));
-        AssertThrow(std::find(methods.begin(), methods.end(), *method) ==
+        AssertThrow(std::find(methods.begin(), methods.end(), name) ==
                       methods.end(),
                     dealii::ExcMessage("Contact/State method: '" + name +
                                        "' is listed twice."));
-        methods.push_back(*method);
+        methods.push_back(name);
       }
     AssertThrow(!methods.empty(),
                 dealii::ExcMessage(
@@ -81,13 +60,28 @@ namespace mbfem
 
 
   std::string
-  to_string(const std::vector<StateMethod> &methods)
+  join_state_methods(const std::vector<std::string> &methods)
   {
     std::string text;
-    for (const StateMethod method : methods)
-      text += (text.empty() ? "" : ", ") + to_string(method);
+    for (const std::string &method : methods)
+      text += (text.empty() ? "" : ", ") + method;
     return text;
   }
+
+
+
+  namespace
+  {
+    /** "fast: assume states, ... load continuation: ...", from the registry. */
+    std::string
+    method_descriptions()
+    {
+      std::string text;
+      for (const auto &entry : registered_state_methods<2>())
+        text += entry.name + ": " + entry.description + " ";
+      return text;
+    }
+  } // namespace
 
 
 
@@ -101,28 +95,20 @@ namespace mbfem
     {
       prm.declare_entry(
         "State method",
-        "fast, load path, semismooth Newton, Lemke, load continuation",
-        Patterns::List(Patterns::Selection(state_method_names()), 1, 5),
+        join_state_methods(all_names()),
+        Patterns::List(Patterns::Selection(state_method_names()),
+                       1,
+                       all_names().size()),
         "The methods of each increment's state iteration, tried in this "
         "order until one concludes (but see 'Method order'; "
-        "doc/state_iteration.md). fast: assume "
-        "states, solve, check, switch every pair that fails its check. "
-        "load path: the increment's load applied in a continuous fraction, "
-        "one pair switching where its condition fails (condensed only). "
-        "semismooth Newton: the increment as one nonsmooth system with a "
-        "sparse Jacobian, its states then checked by a fast solve "
-        "(condensed only). Lemke: complementary pivoting on the increment's "
-        "problem as a linear complementarity problem (exact in 2D, a "
-        "faceted friction cone in 3D), its states then checked by a fast "
-        "solve (condensed only; see 'Lemke'). load continuation: "
-        "the fast iteration at each of 'Load continuation/Load factors' "
-        "times the increment's load (by "
-        "default ten times, then back to it in steps; condensed only). The "
-        "monolithic formulation runs the fast iteration only. "
-        "Where none concludes, the verdict is that of the fast iteration "
-        "or the load path (no equilibrium if one met it). The order "
-        "matters where an increment has more than one solution: each "
-        "method may find another (doc/state_iteration.md).");
+        "doc/state_iteration.md). " +
+          method_descriptions() +
+          "The "
+          "monolithic formulation runs the fast iteration only. "
+          "Where none concludes, the verdict is that of the fast iteration "
+          "or the load path (no equilibrium if one met it). The order "
+          "matters where an increment has more than one solution: each "
+          "method may find another (doc/state_iteration.md).");
       prm.declare_entry(
         "Fast iteration stall",
         "10",

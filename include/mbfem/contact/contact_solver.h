@@ -369,7 +369,7 @@ namespace mbfem
     columns_on_demand() const;
 
     /** Which method concluded the last solve_increment(). */
-    StateMethod
+    const std::string &
     last_method() const;
 
     /**
@@ -465,110 +465,17 @@ namespace mbfem
      * increment, @p from_last_solve); the fast iteration alone where the
      * formulation is monolithic (the others need C_hat and P_hat).
      */
-    std::vector<StateMethod>
+    std::vector<const StateMethodEntry<dim> *>
     increment_methods(const bool from_last_solve) const;
 
     /**
-     * Runs @p method on the increment. Where the semismooth Newton method
-     * or the load continuation fails, the current states are those before
-     * it (which the certificate then reads); the fast iteration and the
-     * load path leave theirs. @p followed: another method comes after it.
-     */
-    StateMethodOutcome
-    run_method(const StateMethod  method,
-               const unsigned int increment,
-               const bool         from_last_solve,
-               const bool         followed);
-
-    /**
-     * run_method() for the load path (LoadPath), from set_path_start();
-     * where it reaches s = 1, its states polished by finish_path().
-     */
-    StateMethodOutcome
-    run_load_path(const unsigned int increment);
-
-    /**
-     * The semismooth Newton method (SemismoothNewton), by default where the
-     * fast iteration and the load path both failed ('Contact/State method'
-     * sets the order), from the increment's bonded answer; its states then
-     * polished by the fast iteration: converged if that found the
-     * increment's solution, which is then current. Its iterations are the
-     * Newton steps and the polishing fast iteration's.
-     */
-    StateMethodOutcome
-    semismooth_newton(const unsigned int increment);
-
-    /**
-     * Lemke's method (LemkeMethod) on the increment's condensed problem
-     * from the committed states; its states then polished by the fast
-     * iteration, as semismooth_newton()'s. Its iterations are the pivots
-     * and the fast iteration's.
-     */
-    StateMethodOutcome
-    lemke(const unsigned int increment);
-
-    /**
-     * The fast iteration from the @p states a method found, and the
-     * mechanism test of its answer: @p outcome, a method's that found
-     * @p states, converges if they stand, the answer then current; it
-     * counts the fast iteration's iterations too.
+     * In a trial of strength reduction (set_early_verdict()), after a
+     * method whose failure calls for it (the load path) and before the
+     * costly ones: throws ExcNoEquilibrium if the statics certificate, with
+     * the joints as the increment found them, admits no forces.
      */
     void
-    settle(const Trial        &states,
-           const unsigned int  increment,
-           StateMethodOutcome &outcome);
-
-    /**
-     * The load continuation: the fast iteration at each of 'Contact/Load
-     * continuation/Load factors' (10, 5, 2, 1) times the increment's load,
-     * each from the states of the last; converged if it concluded at 1
-     * with an acceptable answer, which is then current.
-     */
-    StateMethodOutcome
-    load_continuation(const unsigned int increment);
-
-    /**
-     * The mechanism for which the current answer of the Newton method or
-     * the continuation is refused; empty if it stands: its states leave no
-     * mechanism, or (3D) its slip is elastic.
-     */
-    std::string
-    refused_mechanism() const;
-
-    /**
-     * Whether the current answer's largest slip increment is of the order
-     * of the blocks' deformation (Delta_F + C_hat rho), not an unbounded
-     * rigid slide: semismooth_newton()'s test for a 3D answer whose states
-     * name a mechanism.
-     */
-    bool
-    slip_is_elastic() const;
-
-    /**
-     * The load path's start: the load (s = 0) for which the committed
-     * solution is exact with the present flexibility and coupling.
-     */
-    void
-    set_path_start();
-
-    /**
-     * The load path at s = 1: the fast iteration from the path's
-     * @p states. @p outcome converges if they settle and leave no
-     * mechanism, and then counts the fast iteration's iterations too
-     * (a failure counts the path's switches only).
-     */
-    void
-    finish_path(const Trial        &states,
-                const unsigned int  increment,
-                StateMethodOutcome &outcome);
-
-    /**
-     * Sets the data of the increment to the load fraction @p s: s = 1 is
-     * the increment's load, s = 0 the load for which the committed
-     * solution is exact with the present flexibility.
-     */
-    void
-    set_load_fraction(const double s);
+    early_statics_verdict(const StateMethodOutcome &outcome) const;
 
     /** The pairs, with the joint laws of restart()'s strength factor. */
     std::vector<ContactPair<dim>> contact_pairs;
@@ -665,8 +572,9 @@ namespace mbfem
 
     /** 'Contact/State method' and the methods' limits. */
     StateMethodParameters method_parameters;
-    StateMethod           method          = StateMethod::fast;
-    unsigned int          fast_iterations = 0, path_switches = 0;
+    /** The method running or (after the increment) the one that concluded. */
+    std::string  method          = "fast";
+    unsigned int fast_iterations = 0, path_switches = 0;
     /**
      * The method that concluded the last increment (or plastic pass) since
      * this solver was made or restart() (none before): the first of the
@@ -674,7 +582,10 @@ namespace mbfem
      * changes the contact set-up gets a new solver; one that changes loads
      * only keeps it.
      */
-    std::optional<StateMethod> last_concluded;
+    std::optional<std::string> last_concluded;
+
+    /** The state methods work on the increment through it. */
+    friend class IncrementContext<dim>;
   };
 } // namespace mbfem
 

@@ -46,7 +46,7 @@ namespace mbfem
     struct Outcome : StateMethodOutcome
     {
       // converged stays false: the states at s = 1 are still to be solved
-      // and checked (ContactSolver::finish_path()). no_equilibrium: a
+      // and checked (LoadPathStateMethod::finish()). no_equilibrium: a
       // mechanism no switch mends; iterations: the switches.
       bool reached_end = false; // s = 1, with states
       /**

@@ -3,43 +3,13 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace mbfem
 {
-  /**
-   * The methods of an increment's state iteration (doc/state_iteration.md),
-   * tried in the order of 'Contact/State method' until one concludes:
-   *
-   * - fast: the fixed-point active-set iteration (assume states, solve,
-   *   check, switch);
-   * - load path: the increment's load applied from the last converged
-   *   state in a continuous parameter s in [0, 1], switching the state of
-   *   one pair exactly where its condition fails, which ends at s = 1 with
-   *   the solution or at a mechanism with the fraction it reached;
-   * - semismooth Newton: the increment as one nonsmooth system (Alart and
-   *   Curnier's projections for the joint law) with a sparse Jacobian,
-   *   whose answer gives the states that the fast iteration then solves
-   *   and checks;
-   * - Lemke: complementary pivoting on the increment's problem as a
-   *   linear complementarity problem (LemkeMethod), whose answer gives the
-   *   states that the fast iteration then solves and checks;
-   * - load continuation: the fast iteration at ten times the increment's
-   *   load, then back to it in steps, each from the states of the last.
-   */
-  enum class StateMethod : unsigned char
-  {
-    fast,
-    load_path,
-    semismooth_newton,
-    lemke,
-    load_continuation
-  };
-
-  std::string
-  to_string(const StateMethod method);
-
   /**
    * How one method of the state iteration ended on an increment: whether
    * it concluded, whether its verdict is "no equilibrium" (a mechanism, a
@@ -53,7 +23,95 @@ namespace mbfem
     bool         no_equilibrium = false;
     unsigned int iterations     = 0;
     std::string  failure;
+    /**
+     * A method that follows the load from the last converged state and
+     * stopped short of the increment's end (the load path): the pairs'
+     * broken flags where it stopped and the load fraction it held up to,
+     * which the statics certificate of a failed increment reads
+     * (ContactSolver::certify_path_breaking()).
+     */
+    bool              stopped_short = false;
+    std::vector<bool> stopped_broken;
+    double            stopped_at = 0.;
   };
+
+  /**
+   * What the state iteration's chain (ContactSolver::solve_increment())
+   * needs to know of a method besides its answer: the method's place in
+   * the chain, never how it works.
+   */
+  struct StateMethodTraits
+  {
+    /**
+     * The fast iteration: every other method's answer is polished by it,
+     * and its iterations are counted apart (ContactSolver::last_iterations()).
+     */
+    bool polishes = false;
+    /**
+     * Its failure is the verdict of an increment no method concludes (the
+     * others' failures are said after it).
+     */
+    bool primary = false;
+    /**
+     * Its work grows with what the increment changes (not with the whole
+     * problem), so that where it concluded the last increment it goes first
+     * ('Contact/Method order').
+     */
+    bool resumes_first = false;
+    /**
+     * In a trial of strength reduction, where it fails and costly methods
+     * follow, the statics certificate decides first (set_early_verdict()).
+     */
+    bool certificate_after_failure = false;
+    /** It runs on the monolithic formulation too (the others need C_hat). */
+    bool monolithic = false;
+  };
+
+  template <int dim>
+  class IncrementContext;
+
+  /**
+   * A method of the state iteration (doc/state_iteration.md): given one
+   * increment (IncrementContext: its data, the committed states and the
+   * services every method shares), it concludes with the increment's states
+   * made current, or says why not. A new method is a class derived from
+   * this one with static name(), description() and traits(), in its own
+   * file pair, and one line in source/contact/state_method_registry.cc.
+   */
+  template <int dim>
+  class StateMethodInterface
+  {
+  public:
+    virtual ~StateMethodInterface() = default;
+
+    virtual StateMethodOutcome
+    run(IncrementContext<dim> &increment) = 0;
+  };
+
+  /** One method as the registry holds it. */
+  template <int dim>
+  struct StateMethodEntry
+  {
+    /** Its name in 'Contact/State method'. */
+    std::string name;
+    /** What it does, for the entry's documentation. */
+    std::string                                                 description;
+    StateMethodTraits                                           traits;
+    std::function<std::unique_ptr<StateMethodInterface<dim>>()> create;
+  };
+
+  /**
+   * Every method, in the default order of 'Contact/State method'
+   * (source/contact/state_method_registry.cc).
+   */
+  template <int dim>
+  const std::vector<StateMethodEntry<dim>> &
+  registered_state_methods();
+
+  /** The registered method of @p name (a name that parse_state_methods() accepted). */
+  template <int dim>
+  const StateMethodEntry<dim> &
+  registered_state_method(const std::string &name);
 
   /** The choices of 'Contact/State method', as a ParameterHandler pattern. */
   std::string
@@ -64,12 +122,12 @@ namespace mbfem
    * state_method_names()), in order; throws naming 'Contact/State method'
    * on an unknown or repeated name or an empty list.
    */
-  std::vector<StateMethod>
+  std::vector<std::string>
   parse_state_methods(const std::string &text);
 
   /** The list as 'Contact/State method' writes it. */
   std::string
-  to_string(const std::vector<StateMethod> &methods);
+  join_state_methods(const std::vector<std::string> &methods);
 
 
 
@@ -91,11 +149,11 @@ namespace mbfem
     parse_parameters(dealii::ParameterHandler &prm);
 
     /** The methods, in the order tried. */
-    std::vector<StateMethod> methods = {StateMethod::fast,
-                                        StateMethod::load_path,
-                                        StateMethod::semismooth_newton,
-                                        StateMethod::lemke,
-                                        StateMethod::load_continuation};
+    std::vector<std::string> methods = {"fast",
+                                        "load path",
+                                        "semismooth Newton",
+                                        "Lemke",
+                                        "load continuation"};
 
     /**
      * The fast iteration gives way to the next method where the number of
