@@ -181,6 +181,18 @@ namespace mbfem
   compute_errors(const Block<2> &, const Function<2> &, const Function<2> &);
   template ErrorNorms
   compute_errors(const Block<3> &, const Function<3> &, const Function<3> &);
+  template <int dim>
+  double
+  max_slip(const ContactSolver<dim> &solver)
+  {
+    double largest = 0.;
+    for (unsigned int k = 0; k < solver.pairs().size(); ++k)
+      largest = std::max(largest, solver.slip(k).norm());
+    return largest;
+  }
+
+
+
   template double
   max_displacement(const Block<2> &);
   template double
@@ -189,4 +201,8 @@ namespace mbfem
   max_von_mises_stress(const Block<2> &);
   template double
   max_von_mises_stress(const Block<3> &);
+  template double
+  max_slip(const ContactSolver<2> &);
+  template double
+  max_slip(const ContactSolver<3> &);
 } // namespace mbfem

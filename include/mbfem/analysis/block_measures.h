@@ -2,6 +2,7 @@
 #define mbfem_analysis_block_measures_h
 
 #include <mbfem/block/block.h>
+#include <mbfem/contact/contact_solver.h>
 
 #include <deal.II/base/function.h>
 
@@ -60,6 +61,11 @@ namespace mbfem
   template <int dim>
   double
   max_von_mises_stress(const Block<dim> &block);
+
+  /** Largest tangential relative displacement over the pairs of @p solver. */
+  template <int dim>
+  double
+  max_slip(const ContactSolver<dim> &solver);
 } // namespace mbfem
 
 #endif

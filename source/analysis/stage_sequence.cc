@@ -2,8 +2,8 @@
 // model's configurations, one contact solver each, and the hand-over from
 // one to the next (doc/dam_safety.md, "Stages that add blocks").
 
-#include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/analysis/parameters.h>
+#include <mbfem/analysis/stage_sequence.h>
 
 #include <deal.II/base/types.h>
 
@@ -23,6 +23,13 @@ namespace mbfem
       return "'" + name + "'";
     }
   } // namespace
+
+
+
+  template <int dim>
+  StageSequence<dim>::StageSequence(Model<dim> &model)
+    : model(model)
+  {}
 
 
 
@@ -190,19 +197,19 @@ namespace mbfem
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::check_staged_model()
+  StageSequence<dim>::check_staged_model()
   {
-    const LoadHistory &history = parameters.load_history;
+    const LoadHistory &history = model.parameters.load_history;
     if (!history.changes_model())
       return;
-    check_stages_allowed(parameters);
-    check_stage_blocks(history, blocks);
-    check_stage_interfaces(history, parameters.contact);
+    check_stages_allowed(model.parameters);
+    check_stage_blocks(history, model.blocks);
+    check_stage_interfaces(history, model.parameters.contact);
 
     // Mark when each block comes and goes; an added block does not move
     // before its stage.
-    auto &conditions = parameters.boundary_conditions;
-    for (auto &block : blocks)
+    auto &conditions = model.parameters.boundary_conditions;
+    for (auto &block : model.blocks)
       {
         const unsigned int removing =
           history.stage_removing_block(block->get_id());
@@ -222,12 +229,12 @@ namespace mbfem
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::make_configurations(
+  StageSequence<dim>::make_configurations(
     const std::vector<ContactPair<dim>> &pairs,
     const std::function<std::unique_ptr<ContactSolver<dim>>(
       std::vector<ContactPair<dim>>)>   &make_solver)
   {
-    const LoadHistory &history = parameters.load_history;
+    const LoadHistory &history = model.parameters.load_history;
     const unsigned int n_stages =
       std::max<std::size_t>(history.stages.size(), 1);
     for (const auto &pair : pairs)
@@ -236,7 +243,7 @@ namespace mbfem
       {
         Configuration configuration;
         configuration.first_stage = s;
-        for (const auto &block : blocks)
+        for (const auto &block : model.blocks)
           {
             const unsigned int added =
               history.stage_adding_block(block->get_id());
@@ -267,20 +274,20 @@ namespace mbfem
         for (const unsigned int k : configuration.pairs)
           subset.push_back(pairs[k]);
         configuration.solver = make_solver(std::move(subset));
-        configuration.solver->setup(blocks, configuration.present);
+        configuration.solver->setup(model.blocks, configuration.present);
         configurations.push_back(std::move(configuration));
       }
     active_configuration = 0;
-    contact              = configurations[0].solver.get();
+    model.contact        = configurations[0].solver.get();
   }
 
 
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::switch_configuration(const unsigned int k)
+  StageSequence<dim>::switch_configuration(const unsigned int k)
   {
-    const LoadHistory &history = parameters.load_history;
+    const LoadHistory &history = model.parameters.load_history;
     if (!history.starts_stage(k) || !history.changes_model() ||
         configurations.empty()) // no interfaces: loads alone change
       return;
@@ -305,18 +312,18 @@ namespace mbfem
             numbers::invalid_unsigned_int :
             static_cast<unsigned int>(j - earlier.pairs.begin()));
       }
-    if (!trial_run)
+    if (!model.trial_run)
       warn_of_overlap(earlier, next, earlier_pair);
-    next.solver->continue_from(*earlier.solver, earlier_pair, blocks);
+    next.solver->continue_from(*earlier.solver, earlier_pair, model.blocks);
     release_removed_pairs(earlier, next, s);
-    if (!trial_run)
+    if (!model.trial_run)
       {
         std::string added, removed;
-        for (unsigned int b = 0; b < blocks.size(); ++b)
+        for (unsigned int b = 0; b < model.blocks.size(); ++b)
           if (next.present[b] != earlier.present[b])
             {
               std::string &list = next.present[b] ? added : removed;
-              list += (list.empty() ? "" : ", ") + blocks[b]->name();
+              list += (list.empty() ? "" : ", ") + model.blocks[b]->name();
             }
         std::string what = added.empty() ? "" : "adds " + added + ", ";
         if (!removed.empty())
@@ -329,23 +336,23 @@ namespace mbfem
         if (n_new > 0)
           what += "brings " + std::to_string(n_new) +
                   " new pair(s), closed where they are; ";
-        pcout << "  the stage " << what << next.pairs.size()
-              << " pairs from here on\n";
+        model.pcout << "  the stage " << what << next.pairs.size()
+                    << " pairs from here on\n";
       }
     active_configuration = c;
-    contact              = next.solver.get();
-    water                = next.water.get();
+    model.contact        = next.solver.get();
+    model.water          = next.water.get();
   }
 
 
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::release_removed_pairs(const Configuration &earlier,
-                                               const Configuration &next,
-                                               const unsigned int   s)
+  StageSequence<dim>::release_removed_pairs(const Configuration &earlier,
+                                            const Configuration &next,
+                                            const unsigned int   s)
   {
-    const auto [start, end]          = parameters.load_history.stage_times(s);
+    const auto [start, end] = model.parameters.load_history.stage_times(s);
     const ContactSolver<dim> &solver = *earlier.solver;
     for (unsigned int j = 0; j < earlier.pairs.size(); ++j)
       {
@@ -382,8 +389,8 @@ namespace mbfem
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::add_released_forces(const unsigned int b,
-                                             const double       time)
+  StageSequence<dim>::add_released_forces(const unsigned int b,
+                                          const double       time)
   {
     for (const auto &forces : released)
       {
@@ -398,7 +405,8 @@ namespace mbfem
         std::vector<double> values = forces.forces;
         for (double &value : values)
           value *= left;
-        blocks[forces.block]->add_external_point_forces(forces.dofs, values);
+        model.blocks[forces.block]->add_external_point_forces(forces.dofs,
+                                                              values);
       }
   }
 
@@ -450,7 +458,7 @@ namespace mbfem
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::check_configuration_held(
+  StageSequence<dim>::check_configuration_held(
     const std::vector<ContactPair<dim>> &pairs,
     const Configuration                 &configuration) const
   {
@@ -459,7 +467,7 @@ namespace mbfem
     // on brings them). A group is held when its supports together leave it
     // no rigid motion as one body: a supported block in it, or rollers on
     // different blocks that hold different directions (issue 66).
-    const unsigned int        n = blocks.size();
+    const unsigned int        n = model.blocks.size();
     std::vector<unsigned int> group(n);
     std::iota(group.begin(), group.end(), 0u);
     const auto root = [&](unsigned int b) {
@@ -470,7 +478,7 @@ namespace mbfem
     for (const unsigned int k : configuration.pairs)
       group[root(pairs[k].a.block)] = root(pairs[k].b.block);
 
-    const LoadHistory &history = parameters.load_history;
+    const LoadHistory &history = model.parameters.load_history;
     const std::string  stage =
       history.stages.empty() ?
          std::string("(the only one)") :
@@ -486,17 +494,20 @@ namespace mbfem
         for (unsigned int c = 0; c < n; ++c)
           if (configuration.present[c] && root(c) == root(b))
             {
-              members.push_back(&blocks[c]->get_floating_modes());
-              names += (names.empty() ? "" : ", ") + blocks[c]->name();
+              members.push_back(&model.blocks[c]->get_floating_modes());
+              names += (names.empty() ? "" : ", ") + model.blocks[c]->name();
             }
         Point<dim> centre;
         double     size = 0.;
         const auto free =
           FloatingModes<dim>::free_group_motions(members, centre, size);
-        AssertThrow(
-          free.empty(),
-          ExcMessage(unheld_message(
-            blocks[b]->name(), stage, free, centre, members.size(), names)));
+        AssertThrow(free.empty(),
+                    ExcMessage(unheld_message(model.blocks[b]->name(),
+                                              stage,
+                                              free,
+                                              centre,
+                                              members.size(),
+                                              names)));
       }
   }
 
@@ -504,13 +515,13 @@ namespace mbfem
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::check_switched_on(
+  StageSequence<dim>::check_switched_on(
     const std::vector<ContactPair<dim>> &pairs,
     const Configuration                 &configuration) const
   {
     // An interface switched on while a block of it is not there yet would
     // silently begin with that block instead.
-    const LoadHistory &history = parameters.load_history;
+    const LoadHistory &history = model.parameters.load_history;
     const unsigned int s       = configuration.first_stage;
     for (const auto &pair : pairs)
       {
@@ -522,7 +533,7 @@ namespace mbfem
                                  quoted(history.stages[s].name) +
                                  " switches on interface " +
                                  std::to_string(pair.interface + 1) + ", but " +
-                                 blocks[side->block]->name() +
+                                 model.blocks[side->block]->name() +
                                  " is not there in that stage."));
       }
   }
@@ -531,7 +542,7 @@ namespace mbfem
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::warn_of_overlap(
+  StageSequence<dim>::warn_of_overlap(
     const Configuration             &earlier,
     const Configuration             &next,
     const std::vector<unsigned int> &earlier_pair) const
@@ -545,57 +556,115 @@ namespace mbfem
         if (earlier_pair[k] != numbers::invalid_unsigned_int ||
             !earlier.present[pair.a.block] || !earlier.present[pair.b.block])
           continue;
-        const double gap = mesh_gaps[next.pairs[k]] +
-                           pair.frame[0] * pair.relative_displacement(blocks);
+        const double gap =
+          mesh_gaps[next.pairs[k]] +
+          pair.frame[0] * pair.relative_displacement(model.blocks);
         overlap = std::max(overlap, -gap);
       }
     if (overlap > 0.)
-      pcout << "  warning: while their interface was off, the blocks of a "
-               "pair switched on now moved into each other, by up to "
-            << overlap
-            << " (they do not touch before; its pairs close where they "
-               "are)\n";
+      model.pcout
+        << "  warning: while their interface was off, the blocks of a "
+           "pair switched on now moved into each other, by up to "
+        << overlap
+        << " (they do not touch before; its pairs close where they "
+           "are)\n";
   }
 
 
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::restart_contact(const double factor)
+  StageSequence<dim>::restart_contact(const double factor)
   {
     released.clear();
     active_configuration = 0;
-    contact              = configurations[0].solver.get();
-    water                = configurations[0].water.get();
-    contact->restart(factor,
-                     parameters.strength_reduction.reduce_tensile_strength);
+    model.contact        = configurations[0].solver.get();
+    model.water          = configurations[0].water.get();
+    model.contact->restart(
+      factor, model.parameters.strength_reduction.reduce_tensile_strength);
   }
 
 
 
-  // The members defined in this file (the class itself is instantiated in
-  // multibody_problem.cc).
-#define MBFEM_INSTANTIATE(dim)                                             \
-  template void MultiBodyProblem<dim>::check_staged_model();               \
-  template void MultiBodyProblem<dim>::make_configurations(                \
-    const std::vector<ContactPair<dim>> &,                                 \
-    const std::function<std::unique_ptr<ContactSolver<dim>>(               \
-      std::vector<ContactPair<dim>>)> &);                                  \
-  template void MultiBodyProblem<dim>::switch_configuration(unsigned int); \
-  template void MultiBodyProblem<dim>::restart_contact(double);            \
-  template void MultiBodyProblem<dim>::release_removed_pairs(              \
-    const Configuration &, const Configuration &, unsigned int);           \
-  template void MultiBodyProblem<dim>::check_configuration_held(           \
-    const std::vector<ContactPair<dim>> &, const Configuration &) const;   \
-  template void MultiBodyProblem<dim>::check_switched_on(                  \
-    const std::vector<ContactPair<dim>> &, const Configuration &) const;   \
-  template void MultiBodyProblem<dim>::warn_of_overlap(                    \
-    const Configuration &,                                                 \
-    const Configuration &,                                                 \
-    const std::vector<unsigned int> &) const;                              \
-  template void MultiBodyProblem<dim>::add_released_forces(unsigned int,   \
-                                                           double);
-  MBFEM_INSTANTIATE(2)
-  MBFEM_INSTANTIATE(3)
-#undef MBFEM_INSTANTIATE
+  template <int dim>
+  void
+  StageSequence<dim>::make_water()
+  {
+    if (!model.parameters.water_pressure.enabled())
+      return;
+    for (auto &configuration : configurations)
+      configuration.water =
+        std::make_unique<JointWater<dim>>(model.parameters.water_pressure,
+                                          model.parameters.contact,
+                                          configuration.solver->pairs(),
+                                          model.blocks.size());
+    model.water = configurations[0].water.get();
+    // The stage with the most pairs (the model finished, unless some
+    // stage removes blocks).
+    const Configuration &most =
+      *std::max_element(configurations.begin(),
+                        configurations.end(),
+                        [](const Configuration &a, const Configuration &b) {
+                          return a.pairs.size() < b.pairs.size();
+                        });
+    model.pcout << "  water pressure on " << most.water->n_wet_pairs() << " of "
+                << most.pairs.size() << " pairs (both faces of the joint)\n";
+  }
+
+
+
+  template <int dim>
+  void
+  StageSequence<dim>::adopt(std::unique_ptr<ContactSolver<dim>> solver,
+                            const unsigned int                  n_pairs)
+  {
+    configurations.resize(1);
+    configurations[0].present.assign(model.blocks.size(), true);
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      configurations[0].pairs.push_back(k);
+    configurations[0].solver = std::move(solver);
+    model.contact            = configurations[0].solver.get();
+  }
+
+
+
+  template <int dim>
+  void
+  StageSequence<dim>::set_early_verdict(const bool early)
+  {
+    for (auto &configuration : configurations)
+      configuration.solver->set_early_verdict(early);
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  StageSequence<dim>::present_pairs() const
+  {
+    if (!model.parameters.load_history.changes_model())
+      return {};
+    return configurations[active_configuration].pairs;
+  }
+
+
+
+  template <int dim>
+  std::pair<std::size_t, std::size_t>
+  StageSequence<dim>::columns_on_demand() const
+  {
+    std::size_t computed = 0, all = 0;
+    for (const auto &configuration : configurations)
+      if (configuration.solver != nullptr)
+        {
+          computed += configuration.solver->columns_on_demand().first;
+          all += configuration.solver->columns_on_demand().second;
+        }
+    return {computed, all};
+  }
+
+
+
+  template class StageSequence<2>;
+  template class StageSequence<3>;
 } // namespace mbfem

@@ -1,11 +1,11 @@
-// The strength-reduction mode of MultiBodyProblem (issue 28): the trials
+// The strength-reduction mode (issue 28): the trials
 // of the load history at reduced joint strengths on one set-up, and the
 // final run at the factor of safety. The search itself is
 // StrengthReduction (strength_reduction.cc), which knows nothing of blocks.
 
 #include <mbfem/analysis/block_measures.h>
-#include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/analysis/parameters.h>
+#include <mbfem/analysis/strength_reduction_run.h>
 #include <mbfem/base/exceptions.h>
 
 #include <deal.II/base/timer.h>
@@ -20,50 +20,63 @@
 namespace mbfem
 {
   template <int dim>
+  StrengthReductionRun<dim>::StrengthReductionRun(
+    Model<dim>                              &model,
+    StageSequence<dim>                      &stages,
+    const std::function<void(unsigned int)> &do_increment,
+    const std::function<void()>             &run_load_history)
+    : model(model)
+    , stages(stages)
+    , do_increment(do_increment)
+    , run_load_history(run_load_history)
+  {}
+
+
+
+  template <int dim>
   void
-  MultiBodyProblem<dim>::run_strength_reduction(const double setup_seconds)
+  StrengthReductionRun<dim>::run(const double setup_seconds)
   {
-    const auto       &srm = parameters.strength_reduction;
+    const auto       &srm = model.parameters.strength_reduction;
     StrengthReduction search(srm,
-                             pcout.get_stream(),
-                             parameters.run.test_mode,
-                             parameters.output.directory + "/" +
-                               parameters.output.base_name +
+                             model.pcout.get_stream(),
+                             model.parameters.run.test_mode,
+                             model.parameters.output.directory + "/" +
+                               model.parameters.output.base_name +
                                "-strength-reduction.csv");
     // The formulation's time of the run at F, not of the trials.
-    const double condensed_setup = condensed_seconds;
+    const double condensed_setup = model.condensed_seconds;
     const double factor          = search.search(
       [&](const double f) { return run_trial(f, search.trials().empty()); });
 
-    pcout << "The load history at F = " << factor
-          << ", the last factor that converged:\n";
-    condensed_seconds = condensed_setup;
+    model.pcout << "The load history at F = " << factor
+                << ", the last factor that converged:\n";
+    model.condensed_seconds = condensed_setup;
     Timer final_clock;
-    restart_contact(factor);
-    for (auto &configuration : configurations)
-      configuration.solver->set_early_verdict(false); // the full messages
+    stages.restart_contact(factor);
+    stages.set_early_verdict(false); // the full messages
     run_load_history();
     const double final_seconds = final_clock.wall_time();
 
-    pcout << search.result_line() << "\n";
+    model.pcout << search.result_line() << "\n";
     if (!search.closed_form_line().empty())
-      pcout << "  " << search.closed_form_line() << "\n";
+      model.pcout << "  " << search.closed_form_line() << "\n";
     double trial_seconds = 0.;
     for (const auto &trial : search.trials())
       trial_seconds += trial.seconds;
-    pcout << "  " << search.trials().size()
-          << " trial load histories and the final one on one set-up "
-             "(factorisations and flexibilities reused)";
-    if (!parameters.run.test_mode)
-      pcout << ": set-up " << std::fixed << std::setprecision(2)
-            << setup_seconds << " s, trials " << trial_seconds
-            << " s, final run " << final_seconds << " s; in all "
-            << std::setprecision(1)
-            << (setup_seconds + trial_seconds + final_seconds) /
-                 (setup_seconds + search.trials().front().seconds)
-            << " times one run of the model at F = 1" << std::defaultfloat
-            << std::setprecision(6);
-    pcout << "\n";
+    model.pcout << "  " << search.trials().size()
+                << " trial load histories and the final one on one set-up "
+                   "(factorisations and flexibilities reused)";
+    if (!model.parameters.run.test_mode)
+      model.pcout << ": set-up " << std::fixed << std::setprecision(2)
+                  << setup_seconds << " s, trials " << trial_seconds
+                  << " s, final run " << final_seconds << " s; in all "
+                  << std::setprecision(1)
+                  << (setup_seconds + trial_seconds + final_seconds) /
+                       (setup_seconds + search.trials().front().seconds)
+                  << " times one run of the model at F = 1" << std::defaultfloat
+                  << std::setprecision(6);
+    model.pcout << "\n";
   }
 
 
@@ -73,7 +86,7 @@ namespace mbfem
     /**
      * A trial of strength reduction while it lives, however it ends (a
      * failure, a signal): the screen silent and nothing written
-     * (MultiBodyProblem::trial_run).
+     * (Model::trial_run).
      */
     class TrialScope
     {
@@ -128,20 +141,19 @@ namespace mbfem
 
   template <int dim>
   StrengthTrial
-  MultiBodyProblem<dim>::run_trial(const double factor,
-                                   const bool   statics_bound)
+  StrengthReductionRun<dim>::run_trial(const double factor,
+                                       const bool   statics_bound)
   {
     StrengthTrial      trial;
-    const unsigned int first = parameters.in_situ_stress.enabled ? 0 : 1;
-    const unsigned int last  = parameters.load_history.n_increments;
+    const unsigned int first = model.parameters.in_situ_stress.enabled ? 0 : 1;
+    const unsigned int last  = model.parameters.load_history.n_increments;
     trial.factor             = factor;
     trial.n_increments       = last + 1 - first;
-    restart_contact(factor);
+    stages.restart_contact(factor);
     // A trial needs only the verdict: where statics proves none, the
     // costly methods of the chain are not tried.
-    for (auto &configuration : configurations)
-      configuration.solver->set_early_verdict(true);
-    const TrialScope scope(pcout, trial_run);
+    stages.set_early_verdict(true);
+    const TrialScope scope(model.pcout, model.trial_run);
 
     std::set<std::string> methods;
     Timer                 clock;
@@ -151,14 +163,14 @@ namespace mbfem
           {
             do_increment(k);
             ++trial.increments;
-            methods.insert(contact->last_method());
-            trial.iterations += contact->last_iterations().first +
-                                contact->last_iterations().second;
+            methods.insert(model.contact->last_method());
+            trial.iterations += model.contact->last_iterations().first +
+                                model.contact->last_iterations().second;
             trial.largest_displacement = 0.;
-            for (const auto &block : blocks)
+            for (const auto &block : model.blocks)
               trial.largest_displacement =
                 std::max(trial.largest_displacement, max_displacement(*block));
-            trial.largest_slip = max_slip(*contact);
+            trial.largest_slip = max_slip(*model.contact);
             if (statics_bound)
               measure_statics(trial, k == last);
           }
@@ -182,13 +194,13 @@ namespace mbfem
 
   template <int dim>
   void
-  MultiBodyProblem<dim>::measure_statics(StrengthTrial &trial,
-                                         const bool     last) const
+  StrengthReductionRun<dim>::measure_statics(StrengthTrial &trial,
+                                             const bool     last) const
   {
     // Unbroken: an upper bound whatever pairs another trial breaks
     // (strength_factor_bounded: the search hit its bound of 1000). The
     // mechanism's limit equilibrium only where the history ends.
-    const auto result = contact->certify(last, true);
+    const auto result = model.contact->certify(last, true);
     if (!result.strength_factor_bounded)
       {
         const double bound  = trial.factor * result.strength_factor;
@@ -202,16 +214,6 @@ namespace mbfem
   }
 
 
-  template void
-  MultiBodyProblem<2>::run_strength_reduction(const double);
-  template void
-  MultiBodyProblem<3>::run_strength_reduction(const double);
-  template StrengthTrial
-  MultiBodyProblem<2>::run_trial(const double, const bool);
-  template StrengthTrial
-  MultiBodyProblem<3>::run_trial(const double, const bool);
-  template void
-  MultiBodyProblem<2>::measure_statics(StrengthTrial &, const bool) const;
-  template void
-  MultiBodyProblem<3>::measure_statics(StrengthTrial &, const bool) const;
+  template class StrengthReductionRun<2>;
+  template class StrengthReductionRun<3>;
 } // namespace mbfem
