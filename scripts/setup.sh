@@ -18,7 +18,7 @@ build_dir=${MBFEM_BUILD_DIR:-$source_dir/build}
 # C API for the block flexibilities; matplotlib for the default example's
 # figure; Open MPI's mpirun for runs and tests on several ranks; the
 # compiler and build tools.
-packages="libdeal.ii-dev libmetis-dev libmumps-dev openmpi-bin libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format coinor-libclp-dev python3-matplotlib python3-scipy"
+packages="libdeal.ii-dev libmetis-dev libmumps-dev openmpi-bin libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format coinor-libclp-dev libgmsh-dev python3-matplotlib python3-scipy"
 
 missing=""
 for package in $packages; do

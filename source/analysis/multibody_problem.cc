@@ -4,9 +4,11 @@
 #include <mbfem/analysis/parameters.h>
 #include <mbfem/analysis/strength_reduction_run.h>
 #include <mbfem/base/exceptions.h>
+#include <mbfem/base/files.h>
 #include <mbfem/base/interruption.h>
 #include <mbfem/base/parallel.h>
 #include <mbfem/mesh/mesh_checks.h>
+#include <mbfem/mesh/rock_mass.h>
 
 #include <deal.II/base/timer.h>
 
@@ -40,8 +42,83 @@ namespace mbfem
 
   template <int dim>
   void
+  MultiBodyProblem<dim>::build_rock_mass_mesh()
+  {
+    Parameters<dim>         &parameters = model.parameters;
+    const auto              &origin     = parameters.mesh.rock_mass.origin;
+    std::vector<JointPlanes> sets;
+    for (const JointSet &set : parameters.contact.joint_sets)
+      {
+        if (set.spacing == 0.)
+          continue; // a law only
+        AssertThrow(set.point.empty() || set.point.size() == dim,
+                    ExcMessage("Contact/Joint sets: the point of the set '" +
+                               set.name + "' has " +
+                               std::to_string(set.point.size()) +
+                               " coordinates; a " + std::to_string(dim) +
+                               "D model needs " + std::to_string(dim) + "."));
+        JointPlanes planes;
+        planes.name            = set.name;
+        planes.spacing         = set.spacing;
+        const Tensor<1, dim> n = set.normal<dim>();
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            planes.normal[d] = n[d];
+            planes.point[d]  = !set.point.empty() ? set.point[d] :
+                               d < origin.size()  ? origin[d] :
+                                                    0.;
+          }
+        sets.push_back(planes);
+      }
+    const OutputParameters &output = parameters.output;
+    create_output_directory(output.directory);
+    const std::string file =
+      output.directory + "/" + output.base_name + "-rock-mass.msh";
+    RockMassSummary summary;
+    Parallel::on_owner(MPI_COMM_WORLD, 0, [&]() {
+      summary = build_rock_mass<dim>(parameters.mesh.rock_mass, sets, file);
+    });
+    parameters.mesh.mesh_file = file;
+    print_rock_mass(summary, sets, file);
+  }
+
+
+
+  template <int dim>
+  void
+  MultiBodyProblem<dim>::print_rock_mass(const RockMassSummary &summary,
+                                         const std::vector<JointPlanes> &sets,
+                                         const std::string &file) const
+  {
+    ConditionalOStream &pcout = model.pcout;
+    pcout << "rock mass: " << summary.n_blocks << " blocks cut by ";
+    for (unsigned int s = 0; s < sets.size(); ++s)
+      pcout << (s > 0 ? ", " : "") << sets[s].name << " ("
+            << summary.planes_per_set[s] << " planes)";
+    if (sets.empty())
+      pcout << "no joint set with a spacing";
+    pcout << "; " << (dim == 2 ? "areas " : "volumes ") << summary.smallest
+          << " to " << summary.largest << ", their sum "
+          << std::setprecision(12) << summary.blocks_measure << " of the box's "
+          << summary.domain_measure << std::setprecision(6) << "; "
+          << summary.n_cells << (dim == 2 ? " quadrilaterals" : " hexahedra")
+          << ", written to " << file << "\n";
+    if (summary.n_small > 0)
+      pcout << "  warning: " << summary.n_small
+            << " block(s) smaller than half an element ('Mesh/Rock "
+               "mass/Mesh size' to the power "
+            << dim << ", halved), the smallest " << summary.smallest
+            << "; they are kept (a set cutting a corner off the box)\n";
+  }
+
+
+
+  template <int dim>
+  void
   MultiBodyProblem<dim>::make_blocks()
   {
+    if (model.parameters.mesh.source == "rock mass")
+      build_rock_mass_mesh();
     TimerOutput::Scope t(model.timer, "mesh");
     Triangulation<dim> mesh;
     create_mesh(model.parameters.mesh, mesh);

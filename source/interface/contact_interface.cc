@@ -63,7 +63,11 @@ namespace mbfem
         "'Tensile strength'. Dip is from the horizontal, 0 to 90; dip "
         "direction the azimuth towards which the plane dips, clockwise from "
         "+y (north) in 3D; in 2D (x east, y up) 90 dips towards +x and 270 "
-        "towards -x.");
+        "towards -x. With 'Mesh/Source = rock mass' the keys spacing (the "
+        "distance between the set's planes) and point (one of them passes "
+        "through it: 2 or 3 numbers separated by spaces; default the "
+        "rock mass's origin) make the set cut the domain into blocks "
+        "(doc/rock_mass.md).");
       prm.declare_entry("Cohesion",
                         "0",
                         Patterns::List(Patterns::Double(0.)),

@@ -43,6 +43,21 @@ namespace mbfem
     void
     read_item(const std::string &item, const std::string &text, JointSet &set)
     {
+      if (item.rfind("point ", 0) == 0)
+        {
+          std::istringstream in(item.substr(6));
+          double             x = 0.;
+          set.point.clear();
+          while (in >> x)
+            set.point.push_back(x);
+          AssertThrow(in.eof() &&
+                        (set.point.size() == 2 || set.point.size() == 3),
+                      ExcMessage("Contact/Joint sets: '" + item + "' in '" +
+                                 text +
+                                 "': a point is 2 or 3 numbers separated by "
+                                 "spaces."));
+          return;
+        }
       const auto space = item.find_last_of(' ');
       const auto key =
         (space == std::string::npos ? item :
@@ -78,10 +93,12 @@ namespace mbfem
       else if (key == "tensile strength")
         check((set.joint.tensile_strength = value) >= 0.,
               "tensile strength >= 0.");
+      else if (key == "spacing")
+        check((set.spacing = value) > 0., "spacing > 0.");
       else
         check(false,
               "the keys are dip, dip direction, tolerance, friction, "
-              "cohesion, tensile strength.");
+              "cohesion, tensile strength, spacing, point.");
     }
   } // namespace
 

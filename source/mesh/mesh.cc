@@ -30,12 +30,16 @@ namespace mbfem
       prm.declare_entry(
         "Source",
         "generator",
-        Patterns::Selection("gmsh|generator"),
+        Patterns::Selection("gmsh|generator|rock mass"),
         "Where the mesh comes from. 'gmsh': read 'Mesh file' (a gmsh .msh "
         "file; physical groups of cells give the material id, i.e. the "
         "block, and physical groups of faces give boundary ids). "
         "'generator': call the deal.II GridGenerator function named in "
-        "'Generator name' with 'Generator arguments'.");
+        "'Generator name' with 'Generator arguments'. 'rock mass': the box "
+        "of 'Rock mass' cut into blocks by the planes of every joint set of "
+        "'Contact/Joint sets' that has a spacing, meshed by gmsh and written "
+        "to <Output directory>/<Base name>-rock-mass.msh before it is read "
+        "(doc/rock_mass.md).");
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::Anything(),
@@ -92,6 +96,7 @@ namespace mbfem
         "match at their common faces: declare those interfaces 'mortar' "
         "(Contact/Interfaces).");
     }
+    RockMassParameters::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -109,7 +114,8 @@ namespace mbfem
       generator_arguments = prm.get("Generator arguments");
       initial_refinement  = prm.get_integer("Initial global refinement");
       block_id_function   = prm.get("Block id function");
-      block_refinements   = parse_id_values(prm.get("Block refinements"),
+      rock_mass.parse_parameters(prm);
+      block_refinements = parse_id_values(prm.get("Block refinements"),
                                           "Mesh/Block refinements",
                                           0,
                                           6);
@@ -450,14 +456,14 @@ namespace mbfem
   create_mesh(const MeshParameters &parameters,
               Triangulation<dim>   &triangulation)
   {
-    if (parameters.source == "gmsh")
+    if (parameters.source == "gmsh" || parameters.source == "rock mass")
       read_gmsh_mesh(parameters, triangulation);
     else
       generate_mesh(parameters, triangulation);
     AssertThrow(triangulation.all_reference_cells_are_hyper_cube(),
                 ExcMessage(
                   "The mesh " +
-                  (parameters.source == "gmsh" ?
+                  (parameters.source != "generator" ?
                      "<" + parameters.mesh_file + "> " :
                      std::string()) +
                   "has triangles or tetrahedra; mbfem's FE_Q elements "

@@ -5,6 +5,7 @@
 #include <mbfem/analysis/model.h>
 #include <mbfem/analysis/run_report.h>
 #include <mbfem/analysis/stage_sequence.h>
+#include <mbfem/mesh/rock_mass.h>
 
 #include <deal.II/base/conditional_ostream.h>
 
@@ -52,6 +53,20 @@ namespace mbfem
     get_contact() const;
 
   private:
+    /**
+     * Mesh/Source = rock mass: the blocks' gmsh file built from the domain
+     * and the joint sets with a spacing (build_rock_mass()), written to the
+     * output folder, where make_blocks() then reads it.
+     */
+    void
+    build_rock_mass_mesh();
+
+    /** The screen's line of what build_rock_mass_mesh() built. */
+    void
+    print_rock_mass(const RockMassSummary          &summary,
+                    const std::vector<JointPlanes> &sets,
+                    const std::string              &file) const;
+
     void
     make_blocks();
 

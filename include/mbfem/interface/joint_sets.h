@@ -40,6 +40,13 @@ namespace mbfem
     double      dip_direction = 0.;
     double      tolerance     = 5.;
     JointLaw    joint;
+    /**
+     * For 'Mesh/Source = rock mass': the spacing of the set's planes (0:
+     * a set that only gives the law of joints a mesh file has) and a
+     * point one of them passes through (empty: the domain's origin).
+     */
+    double              spacing = 0.;
+    std::vector<double> point;
 
     /** Upward unit normal of the set's plane. */
     template <int dim>
@@ -55,7 +62,8 @@ namespace mbfem
   /**
    * Reads 'Contact/Joint sets': sets separated by ';', each
    * 'name: key value, key value, ...' with the keys dip, dip direction,
-   * tolerance (degrees), friction, cohesion, tensile strength. Strength
+   * tolerance (degrees), friction, cohesion, tensile strength, spacing and
+   * point (2 or 3 numbers separated by spaces). Strength
    * values not given are those of @p defaults. Throws with the text that
    * could not be read.
    */

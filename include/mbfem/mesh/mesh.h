@@ -1,6 +1,8 @@
 #ifndef mbfem_mesh_mesh_h
 #define mbfem_mesh_mesh_h
 
+#include <mbfem/mesh/rock_mass.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 
@@ -31,11 +33,17 @@ namespace mbfem
     void
     parse_parameters(ParameterHandler &prm, const std::string &input_folder);
 
-    std::string  source;
-    std::string  mesh_file;
-    std::string  generator_name;
-    std::string  generator_arguments;
-    unsigned int initial_refinement = 0;
+    std::string source;
+    /**
+     * The gmsh file: read (Source = gmsh), or written by the rock mass
+     * generator before it is read (Source = rock mass).
+     */
+    std::string mesh_file;
+    /** Source = rock mass: the domain the joint sets cut. */
+    RockMassParameters rock_mass;
+    std::string        generator_name;
+    std::string        generator_arguments;
+    unsigned int       initial_refinement = 0;
 
     /** Expression of x, y(, z) giving the block of the cell at that centre. */
     std::string block_id_function;
