@@ -138,7 +138,8 @@ namespace mbfem
     {
       GmshSession()
       {
-        gmsh::initialize();
+        // Not the user's gmshrc: the same blocks from the same input.
+        gmsh::initialize(0, nullptr, false);
         gmsh::option::setNumber("General.Terminal", 0);
         gmsh::model::add("rock mass");
       }
