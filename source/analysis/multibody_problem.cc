@@ -49,8 +49,8 @@ namespace mbfem
     std::vector<JointPlanes> sets;
     for (const JointSet &set : parameters.contact.joint_sets)
       {
-        if (set.spacing == 0.)
-          continue; // a law only
+        if (set.spacing == 0. && set.point.empty())
+          continue; // a law only (a set with a point alone: one plane)
         AssertThrow(set.point.empty() || set.point.size() == dim,
                     ExcMessage("Contact/Joint sets: the point of the set '" +
                                set.name + "' has " +
@@ -91,24 +91,26 @@ namespace mbfem
                                          const std::string &file) const
   {
     ConditionalOStream &pcout = model.pcout;
-    pcout << "rock mass: " << summary.n_blocks << " blocks cut by ";
+    pcout << "rock mass: " << summary.n_blocks << " blocks"
+          << (summary.has_base ? " (block 1 the base)" : "") << " cut by ";
     for (unsigned int s = 0; s < sets.size(); ++s)
       pcout << (s > 0 ? ", " : "") << sets[s].name << " ("
             << summary.planes_per_set[s] << " planes)";
     if (sets.empty())
-      pcout << "no joint set with a spacing";
+      pcout << "no joint set with a spacing or a point";
     pcout << "; " << (dim == 2 ? "areas " : "volumes ") << summary.smallest
           << " to " << summary.largest << ", their sum "
-          << std::setprecision(12) << summary.blocks_measure << " of the box's "
-          << summary.domain_measure << std::setprecision(6) << "; "
-          << summary.n_cells << (dim == 2 ? " quadrilaterals" : " hexahedra")
-          << ", written to " << file << "\n";
+          << std::setprecision(12) << summary.blocks_measure
+          << " of the domain's " << summary.domain_measure
+          << std::setprecision(6) << "; " << summary.n_cells
+          << (dim == 2 ? " quadrilaterals" : " hexahedra") << ", written to "
+          << file << "\n";
     if (summary.n_small > 0)
       pcout << "  warning: " << summary.n_small
             << " block(s) smaller than half an element ('Mesh/Rock "
                "mass/Mesh size' to the power "
             << dim << ", halved), the smallest " << summary.smallest
-            << "; they are kept (a set cutting a corner off the box)\n";
+            << "; they are kept (a set cutting a corner off the domain)\n";
   }
 
 

@@ -66,7 +66,8 @@ namespace mbfem
         "towards -x. With 'Mesh/Source = rock mass' the keys spacing (the "
         "distance between the set's planes) and point (one of them passes "
         "through it: 2 or 3 numbers separated by spaces; default the "
-        "rock mass's origin) make the set cut the domain into blocks "
+        "rock mass's origin) make the set cut the domain into blocks; a "
+        "point without a spacing is one plane, a fault "
         "(doc/rock_mass.md).");
       prm.declare_entry("Cohesion",
                         "0",

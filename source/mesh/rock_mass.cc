@@ -21,17 +21,53 @@ namespace mbfem
   {
     prm.enter_subsection("Rock mass");
     {
+      prm.declare_entry("Domain",
+                        "box",
+                        Patterns::Selection("box|slope"),
+                        "For Source = rock mass, what the joint sets of "
+                        "'Contact/Joint sets' with a spacing or a point "
+                        "cut into blocks: 'box' (a rectangle in 2D: Origin "
+                        "and Size), or 'slope' (a profile in the x-z "
+                        "plane, y up in 2D, its face dipping towards +x, "
+                        "extruded along y in 3D: Origin and the Slope "
+                        "entries, on the uncut Base). x east, y north "
+                        "(2D: up), z up.");
       prm.declare_entry("Origin",
                         "0, 0, 0",
                         Patterns::List(Patterns::Double(), 2, 3),
-                        "For Source = rock mass: the lowest corner of the "
-                        "box (rectangle in 2D) that the joint sets of "
-                        "'Contact/Joint sets' with a spacing cut into "
-                        "blocks. x east, y north (2D: up), z up.");
+                        "The box's lowest corner; for a slope the foot of "
+                        "its back, at the level of its toe.");
       prm.declare_entry("Size",
                         "10, 10, 10",
                         Patterns::List(Patterns::Double(0.), 2, 3),
                         "The box's extent along x, y (and z).");
+      prm.declare_entry("Slope height",
+                        "10",
+                        Patterns::Double(0.),
+                        "From the toe to the crest.");
+      prm.declare_entry("Face angle",
+                        "60",
+                        Patterns::Double(0., 90.),
+                        "The dip of the slope's face, in degrees (its dip "
+                        "direction is 90, towards +x).");
+      prm.declare_entry("Crest width",
+                        "10",
+                        Patterns::Double(0.),
+                        "From the back of the slope (x = Origin) to the "
+                        "top of the face.");
+      prm.declare_entry("Slope length",
+                        "10",
+                        Patterns::Double(0.),
+                        "3D: the slope's extent along y (its strike).");
+      prm.declare_entry("Base",
+                        "0, 0, 0",
+                        Patterns::List(Patterns::Double(0.), 3, 3),
+                        "A slope's base, one block the joints do not cut "
+                        "(the rock the slope was cut from): its depth "
+                        "under the toe, how far it reaches behind the "
+                        "slope's back (up to the crest's level) and in "
+                        "front of the toe. Depth 0: no base, the slope's "
+                        "bottom is the domain's (boundary id 1).");
       prm.declare_entry("Mesh size",
                         "1",
                         Patterns::Double(0.),
@@ -52,10 +88,18 @@ namespace mbfem
   {
     prm.enter_subsection("Rock mass");
     {
+      domain = prm.get("Domain");
       origin = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Origin")));
       size = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Size")));
+      slope_height                = prm.get_double("Slope height");
+      face_angle                  = prm.get_double("Face angle");
+      crest_width                 = prm.get_double("Crest width");
+      slope_length                = prm.get_double("Slope length");
+      const std::vector<double> b = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Base")));
+      std::copy(b.begin(), b.end(), base.begin());
       mesh_size = prm.get_double("Mesh size");
       AssertThrow(mesh_size > 0.,
                   ExcMessage("Mesh/Rock mass/Mesh size must be positive."));
@@ -70,35 +114,89 @@ namespace mbfem
     using Point3  = std::array<double, 3>;
     using DimTags = gmsh::vectorpair;
 
-    /** The box of 'Mesh/Rock mass' in three coordinates (z = 0 in 2D). */
+    /**
+     * 'Mesh/Rock mass' in three coordinates (z = 0 in 2D): the bounding
+     * box of what the joints cut (the box, or the slope without its base)
+     * and that of the whole domain, whose faces carry the boundary ids.
+     */
     struct Domain
     {
-      Point3 origin{}, size{};
-      double mesh_size = 1.;
+      const RockMassParameters *parameters = nullptr;
+      Point3                    origin{}, size{};
+      Point3                    outer_origin{}, outer_size{};
+      double                    mesh_size = 1.;
     };
+
+    /** The horizontal distance from the slope's back to its toe. */
+    double
+    toe_of(const RockMassParameters &p)
+    {
+      return p.crest_width +
+             p.slope_height / std::tan(p.face_angle * M_PI / 180.);
+    }
+
+    /** The slope's bounding boxes, its entries checked. */
+    void
+    slope_boxes(const RockMassParameters &p,
+                const unsigned int        dim,
+                Domain                   &domain)
+    {
+      const std::string where = "Mesh/Rock mass (Domain = slope): ";
+      AssertThrow(p.slope_height > 0. && p.crest_width > 0. &&
+                    p.face_angle > 0. && (dim == 2 || p.slope_length > 0.),
+                  ExcMessage(where + "the Slope height, Crest width, Face "
+                                     "angle (and in 3D the Slope length) "
+                                     "must be positive."));
+      const unsigned int v = dim - 1;
+      domain.size[0]       = toe_of(p);
+      domain.size[v]       = p.slope_height;
+      if (dim == 3)
+        domain.size[1] = p.slope_length;
+      domain.outer_origin = domain.origin;
+      domain.outer_size   = domain.size;
+      if (p.base[0] > 0.)
+        {
+          domain.outer_origin[0] -= p.base[1];
+          domain.outer_origin[v] -= p.base[0];
+          domain.outer_size[0] += p.base[1] + p.base[2];
+          domain.outer_size[v] += p.base[0];
+        }
+      else
+        AssertThrow(p.base[1] == 0. && p.base[2] == 0.,
+                    ExcMessage(where + "Base: a base that reaches behind "
+                                       "or in front of the slope needs a "
+                                       "depth (its first number)."));
+    }
 
     /** 'Mesh/Rock mass' checked for a model of @p dim dimensions. */
     Domain
     domain_of(const RockMassParameters &parameters, const unsigned int dim)
     {
+      const bool box = (parameters.domain == "box");
       for (const auto &[entry, values] :
            {std::make_pair("Origin", &parameters.origin),
             std::make_pair("Size", &parameters.size)})
-        AssertThrow(values->size() == dim,
+        AssertThrow(values->size() == dim ||
+                      (!box && values == &parameters.size),
                     ExcMessage(std::string("Mesh/Rock mass/") + entry +
                                ": give " + std::to_string(dim) +
                                " numbers for a " + std::to_string(dim) +
                                "D model, not " +
                                std::to_string(values->size()) + "."));
       Domain domain;
+      domain.parameters = &parameters;
       for (unsigned int d = 0; d < dim; ++d)
         {
           domain.origin[d] = parameters.origin[d];
-          domain.size[d]   = parameters.size[d];
-          AssertThrow(domain.size[d] > 0.,
+          domain.size[d]   = box ? parameters.size[d] : 0.;
+          AssertThrow(!box || domain.size[d] > 0.,
                       ExcMessage("Mesh/Rock mass/Size: every extent must be "
                                  "positive."));
         }
+      domain.outer_origin = domain.origin;
+      domain.outer_size   = domain.size;
+      if (!box)
+        slope_boxes(parameters, dim, domain);
       domain.mesh_size = parameters.mesh_size;
       return domain;
     }
@@ -176,8 +274,9 @@ namespace mbfem
 
     /**
      * The offsets d (planes n . x = d) of @p set's planes that cut the
-     * domain, not closer than a millionth of its diagonal to a corner
-     * (a plane through a corner or along a face cuts nothing off).
+     * domain's box, not closer than a millionth of its diagonal to a corner
+     * (a plane through a corner or along a face cuts nothing off). A set
+     * of spacing 0 is one plane (a fault) through its point.
      */
     std::vector<double>
     plane_offsets(const JointPlanes &set,
@@ -194,6 +293,12 @@ namespace mbfem
                    margin        = 1e-6 * diagonal;
       const double        origin = dot(set.normal, set.point);
       std::vector<double> offsets;
+      if (set.spacing == 0.)
+        {
+          if (origin > low + margin && origin < high - margin)
+            offsets.push_back(origin);
+          return offsets;
+        }
       for (long k =
              std::lround(std::ceil((low + margin - origin) / set.spacing));
            origin + k * set.spacing < high - margin;
@@ -294,15 +399,17 @@ namespace mbfem
     }
 
     /**
-     * Boundary ids of the domain's faces (edges in 2D): 1 bottom, 2 top
-     * (z in 3D, y in 2D), 3 and 4 x = min and max, 5 and 6 y = min and max
-     * (3D); each a physical group of the faces' pieces.
+     * Boundary ids of the faces (edges in 2D) that lie on the faces of the
+     * domain's bounding box: 1 bottom, 2 top (z in 3D, y in 2D), 3 and 4
+     * x = min and max, 5 and 6 y = min and max (3D); each a physical group
+     * of the faces' pieces. A slope's face has none.
      */
     void
     add_boundary_groups(const Domain &domain, const unsigned int dim)
     {
       const unsigned int vertical = dim - 1;
-      const double tolerance = 1e-6 * std::sqrt(dot(domain.size, domain.size));
+      const double       tolerance =
+        1e-6 * std::sqrt(dot(domain.outer_size, domain.outer_size));
       std::vector<std::vector<int>> groups(7);
       DimTags                       faces;
       gmsh::model::getEntities(faces, dim - 1);
@@ -319,7 +426,7 @@ namespace mbfem
             for (const unsigned int side : {0u, 1u})
               {
                 const double plane =
-                  domain.origin[axis] + side * domain.size[axis];
+                  domain.outer_origin[axis] + side * domain.outer_size[axis];
                 if (std::abs(low[axis] - plane) > tolerance ||
                     std::abs(high[axis] - plane) > tolerance)
                   continue;
@@ -377,7 +484,7 @@ namespace mbfem
               const Domain              &domain)
     {
       const std::string what = "Contact/Joint sets: the set '" + set.name + "'";
-      AssertThrow(set.spacing >= domain.mesh_size,
+      AssertThrow(set.spacing == 0. || set.spacing >= domain.mesh_size,
                   ExcMessage(what + " is spaced " +
                              Utilities::to_string(set.spacing) +
                              ", closer than 'Mesh/Rock mass/Mesh size' (" +
@@ -389,9 +496,9 @@ namespace mbfem
                   ExcMessage(what +
                              " misses the domain: none of its planes (spaced " +
                              Utilities::to_string(set.spacing) +
-                             " through its point) cuts the box of "
-                             "'Mesh/Rock mass'. Check its point, dip and "
-                             "dip direction."));
+                             " through its point; 0: one plane) cuts the "
+                             "bounding box of 'Mesh/Rock mass'. Check its "
+                             "point, dip and dip direction."));
     }
 
     /** Every plane of every set cut into the domain (@p dim - 1 entities). */
@@ -418,14 +525,24 @@ namespace mbfem
       return planes;
     }
 
-    /** The blocks' physical groups and measures into @p summary. */
+    /**
+     * The blocks' physical groups and measures into @p summary; the base
+     * (gmsh tag @p base, 0: none) is block 1.
+     */
     void
     add_block_groups(const Domain      &domain,
                      const unsigned int dim,
+                     const int          base,
                      RockMassSummary   &summary)
     {
-      const std::vector<int> blocks =
+      std::vector<int> blocks =
         ordered_blocks(dim, std::sqrt(dot(domain.size, domain.size)));
+      if (base != 0)
+        {
+          blocks.erase(std::find(blocks.begin(), blocks.end(), base));
+          blocks.insert(blocks.begin(), base);
+        }
+      summary.has_base = (base != 0);
       summary.n_blocks = blocks.size();
       summary.smallest = 1e300;
       for (unsigned int b = 0; b < blocks.size(); ++b)
@@ -433,7 +550,9 @@ namespace mbfem
           gmsh::model::addPhysicalGroup(dim, {blocks[b]}, b + 1);
           gmsh::model::setPhysicalName(dim,
                                        b + 1,
-                                       "block " + std::to_string(b + 1));
+                                       (b == 0 && base != 0) ?
+                                         std::string("base") :
+                                         "block " + std::to_string(b + 1));
           double measure = 0.;
           gmsh::model::occ::getMass(dim, blocks[b], measure);
           summary.blocks_measure += measure;
@@ -448,37 +567,152 @@ namespace mbfem
 
 
 
+  namespace
+  {
+    /**
+     * A polygon of points (x, v) relative to the domain's origin, v
+     * upwards: a surface in 2D, in the x-z plane extruded along y by the
+     * slope's length in 3D.
+     */
+    std::pair<int, int>
+    add_profile(const std::vector<std::pair<double, double>> &xv,
+                const Domain                                 &domain,
+                const unsigned int                            dim)
+    {
+      namespace occ = gmsh::model::occ;
+      std::vector<int> points, lines;
+      for (const auto &[x, v] : xv)
+        {
+          Point3 p = domain.origin;
+          p[0] += x;
+          p[dim - 1] += v;
+          points.push_back(occ::addPoint(p[0], p[1], p[2]));
+        }
+      for (unsigned int i = 0; i < points.size(); ++i)
+        lines.push_back(
+          occ::addLine(points[i], points[(i + 1) % points.size()]));
+      const int surface = occ::addPlaneSurface({occ::addCurveLoop(lines)});
+      if (dim == 2)
+        return {2, surface};
+      DimTags extruded;
+      occ::extrude(
+        {{2, surface}}, 0., domain.parameters->slope_length, 0., extruded);
+      for (const auto &entity : extruded)
+        if (entity.first == 3)
+          return entity;
+      AssertThrow(false, ExcMessage("gmsh did not extrude the slope."));
+      return {};
+    }
+
+    /** What the joints cut: the box, or the slope above its toe. */
+    DimTags
+    add_domain(const Domain &domain, const unsigned int dim)
+    {
+      namespace occ = gmsh::model::occ;
+      const auto &o = domain.origin;
+      const auto &s = domain.size;
+      if (domain.parameters->domain == "box")
+        return {
+          dim == 2 ?
+            std::make_pair(2, occ::addRectangle(o[0], o[1], 0., s[0], s[1])) :
+            std::make_pair(3, occ::addBox(o[0], o[1], o[2], s[0], s[1], s[2]))};
+      const RockMassParameters &p   = *domain.parameters;
+      const double              toe = toe_of(p), h = p.slope_height;
+      return {add_profile({{0., 0.}, {toe, 0.}, {p.crest_width, h}, {0., h}},
+                          domain,
+                          dim)};
+    }
+
+    /**
+     * The slope's base, under it and behind it up to the crest's level
+     * (tag 0 where it has none), fragmented with the blocks so that the
+     * faces they share match.
+     */
+    int
+    add_base(const Domain &domain, const unsigned int dim)
+    {
+      const RockMassParameters &p = *domain.parameters;
+      if (p.domain != "slope" || p.base[0] == 0.)
+        return 0;
+      const double toe = toe_of(p), h = p.slope_height, depth = p.base[0],
+                   behind = p.base[1], front = toe + p.base[2];
+      std::vector<std::pair<double, double>> outline = {{-behind, -depth},
+                                                        {front, -depth},
+                                                        {front, 0.},
+                                                        {0., 0.}};
+      if (behind > 0.)
+        {
+          outline.emplace_back(0., h);
+          outline.emplace_back(-behind, h);
+        }
+      const std::pair<int, int> base = add_profile(outline, domain, dim);
+      DimTags                   blocks, pieces;
+      gmsh::model::getEntities(blocks, dim);
+      blocks.erase(std::find(blocks.begin(), blocks.end(), base));
+      std::vector<DimTags> map;
+      gmsh::model::occ::fragment(blocks, {base}, pieces, map);
+      gmsh::model::occ::synchronize();
+      AssertThrow(map.back().size() == 1,
+                  ExcMessage("gmsh split the slope's base."));
+      return map.back()[0].second;
+    }
+
+    /** The sum of the measures of @p entities. */
+    double
+    measure_of(const DimTags &entities)
+    {
+      double sum = 0.;
+      for (const auto &[d, tag] : entities)
+        {
+          double m = 0.;
+          gmsh::model::occ::getMass(d, tag, m);
+          sum += m;
+        }
+      return sum;
+    }
+
+    /** Cuts the domain by the planes and builds the base: the blocks. */
+    int
+    cut_blocks(const Domain                   &domain,
+               const std::vector<JointPlanes> &sets,
+               const unsigned int              dim,
+               RockMassSummary                &summary)
+    {
+      namespace occ        = gmsh::model::occ;
+      const DimTags body   = add_domain(domain, dim);
+      const DimTags planes = add_planes(domain, sets, dim, summary);
+      occ::synchronize();
+      summary.domain_measure = measure_of(body);
+      if (!planes.empty())
+        {
+          DimTags              pieces;
+          std::vector<DimTags> map;
+          occ::fragment(body, planes, pieces, map);
+        }
+      occ::synchronize();
+      remove_outside_pieces(dim);
+      const int base = add_base(domain, dim);
+      if (base != 0)
+        summary.domain_measure += measure_of({{dim, base}});
+      return base;
+    }
+  } // namespace
+
+
+
   template <int dim>
   RockMassSummary
   build_rock_mass(const RockMassParameters       &parameters,
                   const std::vector<JointPlanes> &sets,
                   const std::string              &msh_file)
   {
-    const Domain    domain = domain_of(parameters, dim);
-    RockMassSummary summary;
-    summary.domain_measure = 1.;
-    for (unsigned int d = 0; d < dim; ++d)
-      summary.domain_measure *= domain.size[d];
+    const Domain      domain = domain_of(parameters, dim);
+    RockMassSummary   summary;
     const GmshSession session;
-    namespace occ = gmsh::model::occ;
     try
       {
-        const auto   &o = domain.origin;
-        const auto   &s = domain.size;
-        const DimTags box =
-          dim == 2 ?
-            DimTags{{2, occ::addRectangle(o[0], o[1], 0., s[0], s[1])}} :
-            DimTags{{3, occ::addBox(o[0], o[1], o[2], s[0], s[1], s[2])}};
-        const DimTags planes = add_planes(domain, sets, dim, summary);
-        if (!planes.empty())
-          {
-            DimTags              pieces;
-            std::vector<DimTags> map;
-            occ::fragment(box, planes, pieces, map);
-          }
-        occ::synchronize();
-        remove_outside_pieces(dim);
-        add_block_groups(domain, dim, summary);
+        const int base = cut_blocks(domain, sets, dim, summary);
+        add_block_groups(domain, dim, base, summary);
         add_boundary_groups(domain, dim);
         set_mesh_options(domain.mesh_size, dim);
         gmsh::model::mesh::generate(dim);

@@ -41,9 +41,10 @@ namespace mbfem
     double      tolerance     = 5.;
     JointLaw    joint;
     /**
-     * For 'Mesh/Source = rock mass': the spacing of the set's planes (0:
-     * a set that only gives the law of joints a mesh file has) and a
-     * point one of them passes through (empty: the domain's origin).
+     * For 'Mesh/Source = rock mass': the spacing of the set's planes and
+     * a point one of them passes through (empty: the domain's origin).
+     * Spacing 0 with a point: one plane (a fault); without: a set that
+     * only gives the law of joints a mesh file has.
      */
     double              spacing = 0.;
     std::vector<double> point;

@@ -14,9 +14,10 @@ namespace mbfem
   /**
    * A family of parallel joint planes as the rock mass generator takes it:
    * the set's name, the unit normal of its planes (3 components; the third
-   * 0 in 2D), the spacing between planes and a point one of them passes
-   * through. The laws of the joints are not the generator's business: the
-   * contact set-up recognises each joint by its orientation (JointSet).
+   * 0 in 2D), the spacing between planes (0: one plane, a fault) and a
+   * point one of them passes through. The laws of the joints are not the
+   * generator's business: the contact set-up recognises each joint by its
+   * orientation (JointSet).
    */
   struct JointPlanes
   {
@@ -28,8 +29,11 @@ namespace mbfem
 
   /**
    * 'Mesh/Source = rock mass': the domain that the joint sets cut into
-   * blocks ('Mesh/Rock mass'): a box (a rectangle in 2D) by its lower
-   * corner and its size, and the size of its elements.
+   * blocks ('Mesh/Rock mass') and the size of its elements. The domain is
+   * a box (a rectangle in 2D) by its lower corner and its size, or a
+   * slope: a profile in the vertical plane through x (its face dipping
+   * towards +x), extruded along y in 3D, optionally on a base that the
+   * joints do not cut (the rock the slope was cut from).
    */
   struct RockMassParameters
   {
@@ -46,6 +50,17 @@ namespace mbfem
      * the model's dimension by build_rock_mass()).
      */
     std::vector<double> origin, size;
+    /** "box" or "slope". */
+    std::string domain = "box";
+    /**
+     * The slope (Origin: the foot of its back, at the level of its toe):
+     * height, dip of the face in degrees, width of the crest from the back
+     * to the top of the face, length along y (3D).
+     */
+    double slope_height = 10., face_angle = 60., crest_width = 10.,
+           slope_length = 10.;
+    /** The base under and behind the slope: depth, behind, in front. */
+    std::array<double, 3> base{};
     /** The target edge length of the blocks' elements. */
     double mesh_size = 1.;
   };
@@ -56,6 +71,8 @@ namespace mbfem
     unsigned int n_blocks = 0;
     /** Planes of each set that cut the domain, in the order given. */
     std::vector<unsigned int> planes_per_set;
+    /** Whether block 1 is the uncut base of a slope. */
+    bool has_base = false;
     /** The domain's volume (area in 2D) and the blocks' sum of it. */
     double domain_measure = 0., blocks_measure = 0.;
     double smallest = 0., largest = 0.;
@@ -71,11 +88,12 @@ namespace mbfem
    * (quadrilaterals in 2D; gmsh's subdivision of its tetrahedra, its
    * full-quad recombination in 2D), and writes @p msh_file (MSH 2.2):
    * one physical group per block, numbered from 1 by the blocks' centres
-   * (lowest first, then y, then x), and boundary ids 1 bottom, 2 top,
-   * 3 x = min, 4 x = max, 5 y = min, 6 y = max (3D; in 2D bottom and top
-   * are y = min and y = max). Throws naming the set where a set misses
-   * the domain or is spaced closer than the mesh size, and with gmsh's
-   * message where gmsh fails.
+   * (lowest first, then y, then x; a slope's base is block 1), and
+   * boundary ids on the faces of the domain's bounding box: 1 bottom,
+   * 2 top, 3 x = min, 4 x = max, 5 y = min, 6 y = max (3D; in 2D bottom
+   * and top are y = min and y = max). Throws naming the set where a set
+   * misses the domain or is spaced closer than the mesh size, and with
+   * gmsh's message where gmsh fails.
    */
   template <int dim>
   RockMassSummary
