@@ -12,7 +12,9 @@
 # parameters/stacked_cantilevers.prm (stacked_N: N pairs; stacked_6697, the
 # largest that fits in 24 GB here, takes some 18 GB and 20 minutes),
 # parameters/hertz_mindlin.prm, parameters/wall_16x16_2d.prm (wall_N: N
-# blocks) and parameters/cube_5x5x5.prm (gravity alone). Each is also run
+# blocks), parameters/cube_5x5x5.prm (gravity alone) and
+# parameters/rock_mass_1000.prm (1000 blocks from three joint sets; its
+# bonded run reads the mesh the first run built). Each is also run
 # as one bonded block with one increment and no contact, the "one linear
 # elastic solve of the same mesh" the table divides by. Do not edit this
 # file while it runs (bash reads it as it goes).
@@ -38,8 +40,9 @@ declare -A models=(
   [wall_64]="wall_16x16_2d|8|2|1|both"
   [wall_256]="wall_16x16_2d|16|2|1|both"
   [cube_125]="cube_5x5x5|5|2|1|condensed"
+  [rock_mass_1000]="rock_mass_1000|10|2|1|condensed"
 )
-order="hertz hertz_fine stacked_105 stacked_369 stacked_1377 stacked_1377_100 stacked_5313 stacked_6697 wall_16 wall_64 wall_256 cube_125"
+order="hertz hertz_fine stacked_105 stacked_369 stacked_1377 stacked_1377_100 stacked_5313 stacked_6697 wall_16 wall_64 wall_256 cube_125 rock_mass_1000"
 selected=${*:-$order}
 
 make_prm() { # name bonded(0/1) -> writes $work/name[-elastic].prm
@@ -70,9 +73,17 @@ make_prm() { # name bonded(0/1) -> writes $work/name[-elastic].prm
     printf 'subsection Load history\n  set End time = 1\n  set Number of increments = %s\nend\n' "$increments" >> "$out"
     printf 'subsection Output\n  set Directory = %s\n  set Write VTU = false\nend\n' "$work/results-$name" >> "$out"
   fi
-  if [[ $name == stacked* ]]; then
-    # KLU has no nested dissection: 3D blocks factorise with MUMPS.
+  if [[ $name == stacked* || ( $name == rock_mass* && $bonded = 1 ) ]]; then
+    # KLU has no nested dissection: 3D blocks factorise with MUMPS (the
+    # rock mass's blocks, one cell each, with KLU; its bonded mesh, 27783
+    # DoFs, took 58 s with KLU).
     printf 'subsection Linear solver\n  set Direct solver = Amesos_Mumps\nend\n' >> "$out"
+  fi
+  if [[ $name == rock_mass* && "$bonded" = 1 ]]; then
+    # The mesh the rock mass run built (gmsh), as one block.
+    printf 'subsection Mesh\n  set Source = gmsh\n  set Mesh file = %s\n  set Block id function = 0\nend\n' \
+      "$work/results-$name/$base-rock-mass.msh" >> "$out"
+    printf 'subsection Contact\n  set Joint sets =\nend\n' >> "$out"
   fi
   if [ "$bonded" = 1 ]; then
     # One block (the stacked beams bonded), one increment, no contact.

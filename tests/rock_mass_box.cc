@@ -10,10 +10,12 @@
 //    of the blocks above it, 9 and 18 blocks of 25e3 per unit volume, to
 //    1e-9 (the side rollers carry no vertical force: nothing else can);
 //  - every block above the base layer is in vertical equilibrium to 1e-9
-//    (the side rollers push horizontally only), and the middle column's,
-//    which touch no side, in full.
+//    (the side rollers push horizontally only), and in full those that
+//    touch no side (the middle column of the 3 x 3 x 3 box).
 // Weights are (unit weight) x (volume of the block's mesh), exact for
 // straight-sided cells; the forces come from the state iteration.
+// `rock_mass_box FILE.prm` checks FILE instead, an n x n x n box of unit
+// blocks with the same sets (parameters/rock_mass_1000.prm: n = 10).
 
 #include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/analysis/parameters.h>
@@ -76,14 +78,13 @@ namespace
 
 
 
-int
-main(int argc, char *argv[])
+/** Runs the box of @p text and prints the checks. */
+void
+check_box(const std::string &text, const std::string &folder)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::string                folder = SOURCE_DIR "/../parameters";
-  ParameterHandler                 prm;
+  ParameterHandler prm;
   mbfem::Parameters<3>::declare_parameters(prm);
-  prm.parse_input_from_string(read(folder + "/rock_mass_box.prm") +
+  prm.parse_input_from_string(text +
                               "\nset Test mode = true\nsubsection Output\n"
                               "  set Write VTU = false\nend\n");
   mbfem::Parameters<3> parameters;
@@ -96,10 +97,13 @@ main(int argc, char *argv[])
   const auto  *contact = problem.get_contact();
   const auto  &pairs   = contact->pairs();
   const Blocks m       = measure(blocks, 25e3);
-  std::cout << blocks.size()
-            << " blocks (27 expected): " << yes(blocks.size() == 27) << "\n"
-            << "their volumes sum to the box's 27 within 1e-10: "
-            << yes(std::abs(m.volume - 27.) < 1e-10 * 27.) << "\n";
+  // the box's side, in blocks of 1
+  const double       n       = parameters.mesh.rock_mass.size[0];
+  const unsigned int n_cubed = std::lround(n * n * n);
+  std::cout << blocks.size() << " blocks (" << n_cubed
+            << " expected): " << yes(blocks.size() == n_cubed) << "\n"
+            << "their volumes sum to the box's " << n_cubed << " within 1e-10: "
+            << yes(std::abs(m.volume - n_cubed) < 1e-10 * n_cubed) << "\n";
 
   // Pairs by set (normal and friction), the bedding levels, each block's
   // sum of forces.
@@ -143,11 +147,11 @@ main(int argc, char *argv[])
   std::cout << level.size()
             << " levels of bedding joints carry the weight above them to "
                "1e-9: "
-            << yes(level.size() == 2 && worst_level < 1e-9) << "\n";
+            << yes(level.size() == n - 1 && worst_level < 1e-9) << "\n";
 
   // Above the base layer: the vertical balance of every block (the side
   // rollers push horizontally only), and all of it for the blocks that
-  // touch no side (the middle column).
+  // touch no side (the middle column of the 3 x 3 x 3 box).
   double worst_vertical = 0., worst_inner = 0.;
   for (unsigned int b = 0; b < blocks.size(); ++b)
     if (m.centre[b][2] > 1.)
@@ -156,13 +160,35 @@ main(int argc, char *argv[])
         total[2] -= m.weight[b];
         worst_vertical =
           std::max(worst_vertical, std::abs(total[2]) / scale[b]);
-        if (std::abs(m.centre[b][0] - 1.5) < 0.5 &&
-            std::abs(m.centre[b][1] - 1.5) < 0.5)
+        if (std::abs(m.centre[b][0] - n / 2.) < n / 2. - 1. &&
+            std::abs(m.centre[b][1] - n / 2.) < n / 2. - 1.)
           worst_inner = std::max(worst_inner, total.norm() / scale[b]);
       }
   std::cout << "every block above the base layer in vertical equilibrium to "
                "1e-9: "
             << yes(worst_vertical < 1e-9) << "\n"
-            << "the middle column's upper blocks in equilibrium to 1e-9: "
+            << "the upper blocks that touch no side in equilibrium to 1e-9: "
             << yes(worst_inner < 1e-9) << "\n";
+}
+
+
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string                file = argc > 1 ? std::string(argv[1]) :
+                                                     SOURCE_DIR
+                             "/../parameters/rock_mass_box.prm";
+  const std::string folder = file.substr(0, file.find_last_of('/') + 1);
+  check_box(read(file), folder);
+  if (argc > 1)
+    return 0;
+  // The same box meshed 'structured': one FE_Q(2) hexahedron per block.
+  std::cout << "Block meshes = structured, FE_Q(2):\n";
+  check_box(read(file) +
+              "\nsubsection Mesh\n  subsection Rock mass\n    set Block "
+              "meshes = structured\n  end\nend\nsubsection Finite "
+              "element\n  set Polynomial degree = 2\nend\n",
+            folder);
 }

@@ -74,7 +74,8 @@ namespace mbfem
     create_output_directory(output.directory);
     const std::string file =
       output.directory + "/" + output.base_name + "-rock-mass.msh";
-    RockMassSummary summary;
+    RockMassSummary    summary;
+    TimerOutput::Scope timer(model.timer, "rock mass (gmsh)");
     Parallel::on_owner(MPI_COMM_WORLD, 0, [&]() {
       summary = build_rock_mass<dim>(parameters.mesh.rock_mass, sets, file);
     });

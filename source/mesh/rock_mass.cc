@@ -77,6 +77,17 @@ namespace mbfem
                         "into quadrilaterals (hexahedra); the faces two "
                         "blocks share are meshed once, so the blocks' "
                         "nodes match there.");
+      prm.declare_entry(
+        "Block meshes",
+        "split",
+        Patterns::Selection("split|structured"),
+        "How the blocks are meshed. split: gmsh's tetrahedra (triangles) "
+        "split into hexahedra (quadrilaterals), for blocks of any shape. "
+        "structured: each block a grid of hexahedra (quadrilaterals) of "
+        "about 'Mesh size', gmsh's transfinite meshes, for blocks that are "
+        "all hexahedra (quadrilaterals), as where three sets (two in 2D) "
+        "cut a box: far fewer cells (one per block at a mesh size of the "
+        "spacing); refused where a block has another shape.");
     }
     prm.leave_subsection();
   }
@@ -100,7 +111,8 @@ namespace mbfem
       const std::vector<double> b = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Base")));
       std::copy(b.begin(), b.end(), base.begin());
-      mesh_size = prm.get_double("Mesh size");
+      mesh_size    = prm.get_double("Mesh size");
+      block_meshes = prm.get("Block meshes");
       AssertThrow(mesh_size > 0.,
                   ExcMessage("Mesh/Rock mass/Mesh size must be positive."));
     }
@@ -445,10 +457,64 @@ namespace mbfem
           }
     }
 
+    /**
+     * The number of blocks that are not hexahedra (quadrilaterals in 2D):
+     * 6 faces of 4 edges (4 edges).
+     */
+    unsigned int
+    n_not_hexahedral(const unsigned int dim)
+    {
+      DimTags      blocks;
+      unsigned int count = 0;
+      gmsh::model::getEntities(blocks, dim);
+      for (const auto &block : blocks)
+        {
+          DimTags faces;
+          gmsh::model::getBoundary({block}, faces, false, false, false);
+          bool hexahedral = faces.size() == 2 * dim;
+          for (const auto &face : faces)
+            if (dim == 3 && hexahedral)
+              {
+                DimTags edges;
+                gmsh::model::getBoundary({face}, edges, false, false, false);
+                hexahedral = edges.size() == 4;
+              }
+          count += !hexahedral;
+        }
+      return count;
+    }
+
+    /**
+     * 'Block meshes = structured': transfinite grids of quadrilaterals
+     * (hexahedra) of about the mesh size, refused where a block is not a
+     * hexahedron.
+     */
+    void
+    set_structured_options(const double mesh_size, const unsigned int dim)
+    {
+      const unsigned int n_other = n_not_hexahedral(dim);
+      AssertThrow(n_other == 0,
+                  ExcMessage("Mesh/Rock mass/Block meshes = structured: " +
+                             std::to_string(n_other) + " of the blocks " +
+                             (dim == 3 ? "are not hexahedra (6 faces of 4 "
+                                         "edges)" :
+                                         "are not quadrilaterals") +
+                             ", as where a set cuts a corner off the domain; "
+                             "use 'Block meshes = split'."));
+      DimTags corners;
+      gmsh::model::getEntities(corners, 0);
+      gmsh::model::mesh::setSize(corners, mesh_size);
+      gmsh::model::mesh::setTransfiniteAutomatic({}, 2.35, true);
+    }
+
     /** gmsh's options for an all-quadrilateral (all-hexahedral) mesh. */
     void
-    set_mesh_options(const double mesh_size, const unsigned int dim)
+    set_mesh_options(const Domain &domain, const unsigned int dim)
     {
+      gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
+      gmsh::option::setNumber("Mesh.SaveAll", 0);
+      if (domain.parameters->block_meshes == "structured")
+        return set_structured_options(domain.mesh_size, dim);
       // Each triangle (tetrahedron) is split into quadrilaterals
       // (hexahedra) of half its edge: twice the size asked for, at every
       // corner of the blocks. (With Mesh.MeshSizeMax instead, gmsh 4.8's
@@ -456,7 +522,7 @@ namespace mbfem
       // corners' sizes, 147.)
       DimTags corners;
       gmsh::model::getEntities(corners, 0);
-      gmsh::model::mesh::setSize(corners, 2. * mesh_size);
+      gmsh::model::mesh::setSize(corners, 2. * domain.mesh_size);
       gmsh::option::setNumber("Mesh.Algorithm", 6); // Frontal-Delaunay
       if (dim == 2)
         {
@@ -468,8 +534,6 @@ namespace mbfem
           gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay
           gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 2);
         }
-      gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
-      gmsh::option::setNumber("Mesh.SaveAll", 0);
     }
   } // namespace
 
@@ -714,7 +778,7 @@ namespace mbfem
         const int base = cut_blocks(domain, sets, dim, summary);
         add_block_groups(domain, dim, base, summary);
         add_boundary_groups(domain, dim);
-        set_mesh_options(domain.mesh_size, dim);
+        set_mesh_options(domain, dim);
         gmsh::model::mesh::generate(dim);
         std::vector<int>                      types;
         std::vector<std::vector<std::size_t>> tags, nodes;

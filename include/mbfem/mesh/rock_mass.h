@@ -63,6 +63,13 @@ namespace mbfem
     std::array<double, 3> base{};
     /** The target edge length of the blocks' elements. */
     double mesh_size = 1.;
+    /**
+     * "split": gmsh's tetrahedra (triangles) split into hexahedra
+     * (quadrilaterals), any block; "structured": transfinite hexahedra
+     * (quadrilaterals), for blocks that are all hexahedra
+     * (quadrilaterals), as a box cut by three (two) sets.
+     */
+    std::string block_meshes = "split";
   };
 
   /** What the generator built, for the screen and the checks. */
