@@ -115,6 +115,9 @@ namespace mbfem
       initial_refinement  = prm.get_integer("Initial global refinement");
       block_id_function   = prm.get("Block id function");
       rock_mass.parse_parameters(prm);
+      if (!rock_mass.geometry_file.empty() &&
+          rock_mass.geometry_file.front() != '/' && !input_folder.empty())
+        rock_mass.geometry_file = input_folder + "/" + rock_mass.geometry_file;
       block_refinements = parse_id_values(prm.get("Block refinements"),
                                           "Mesh/Block refinements",
                                           0,

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 namespace mbfem
@@ -23,15 +24,26 @@ namespace mbfem
     {
       prm.declare_entry("Domain",
                         "box",
-                        Patterns::Selection("box|slope"),
+                        Patterns::Selection("box|slope|file"),
                         "For Source = rock mass, what the joint sets of "
                         "'Contact/Joint sets' with a spacing or a point "
                         "cut into blocks: 'box' (a rectangle in 2D: Origin "
                         "and Size), or 'slope' (a profile in the x-z "
                         "plane, y up in 2D, its face dipping towards +x, "
                         "extruded along y in 3D: Origin and the Slope "
-                        "entries, on the uncut Base). x east, y north "
-                        "(2D: up), z up.");
+                        "entries, on the uncut Base), or 'file' (every "
+                        "volume, surface in 2D, of 'Geometry file'). x "
+                        "east, y north (2D: up), z up.");
+      prm.declare_entry("Geometry file",
+                        "",
+                        Patterns::Anything(),
+                        "For Domain = file: a geometry gmsh reads, .brep, "
+                        ".step or .stp (OpenCASCADE), or a .geo that uses "
+                        "SetFactory(\"OpenCASCADE\"); each of its volumes "
+                        "(surfaces in 2D) is cut by the joints, so a "
+                        "geometry of several volumes gives blocks of "
+                        "several materials' extents. A relative path is "
+                        "taken from the parameter file's folder.");
       prm.declare_entry("Origin",
                         "0, 0, 0",
                         Patterns::List(Patterns::Double(), 2, 3),
@@ -99,8 +111,9 @@ namespace mbfem
   {
     prm.enter_subsection("Rock mass");
     {
-      domain = prm.get("Domain");
-      origin = Utilities::string_to_double(
+      domain        = prm.get("Domain");
+      geometry_file = prm.get("Geometry file");
+      origin        = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Origin")));
       size = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Size")));
@@ -184,6 +197,17 @@ namespace mbfem
     Domain
     domain_of(const RockMassParameters &parameters, const unsigned int dim)
     {
+      Domain domain;
+      domain.parameters = &parameters;
+      domain.mesh_size  = parameters.mesh_size;
+      if (parameters.domain == "file")
+        {
+          const std::string &file = parameters.geometry_file;
+          AssertThrow(!file.empty() && std::filesystem::exists(file),
+                      ExcMessage("Mesh/Rock mass/Geometry file: <" + file +
+                                 "> does not exist (Domain = file)."));
+          return domain; // its boxes once gmsh has read it
+        }
       const bool box = (parameters.domain == "box");
       for (const auto &[entry, values] :
            {std::make_pair("Origin", &parameters.origin),
@@ -195,8 +219,6 @@ namespace mbfem
                                " numbers for a " + std::to_string(dim) +
                                "D model, not " +
                                std::to_string(values->size()) + "."));
-      Domain domain;
-      domain.parameters = &parameters;
       for (unsigned int d = 0; d < dim; ++d)
         {
           domain.origin[d] = parameters.origin[d];
@@ -209,7 +231,6 @@ namespace mbfem
       domain.outer_size   = domain.size;
       if (!box)
         slope_boxes(parameters, dim, domain);
-      domain.mesh_size = parameters.mesh_size;
       return domain;
     }
 
@@ -668,11 +689,51 @@ namespace mbfem
       return {};
     }
 
-    /** What the joints cut: the box, or the slope above its toe. */
+    /**
+     * The volumes (surfaces in 2D) of 'Geometry file', its physical groups
+     * dropped; the domain's boxes set to its bounding box.
+     */
     DimTags
-    add_domain(const Domain &domain, const unsigned int dim)
+    read_geometry(Domain &domain, const unsigned int dim)
+    {
+      const std::string &file = domain.parameters->geometry_file;
+      const std::string  extension =
+        std::filesystem::path(file).extension().string();
+      if (extension == ".geo")
+        gmsh::merge(file);
+      else
+        {
+          DimTags shapes;
+          gmsh::model::occ::importShapes(file, shapes, true);
+        }
+      gmsh::model::occ::synchronize();
+      gmsh::model::removePhysicalGroups();
+      DimTags entities;
+      gmsh::model::getEntities(entities, dim);
+      AssertThrow(!entities.empty(),
+                  ExcMessage("Mesh/Rock mass/Geometry file: <" + file +
+                             "> has no " + (dim == 3 ? "volume" : "surface") +
+                             " for a " + std::to_string(dim) + "D model."));
+      Point3 low, high;
+      gmsh::model::getBoundingBox(
+        -1, -1, low[0], low[1], low[2], high[0], high[1], high[2]);
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          domain.origin[d] = d < dim ? low[d] : 0.;
+          domain.size[d]   = d < dim ? high[d] - low[d] : 0.;
+        }
+      domain.outer_origin = domain.origin;
+      domain.outer_size   = domain.size;
+      return entities;
+    }
+
+    /** What the joints cut: the box, the slope above its toe, the file's. */
+    DimTags
+    add_domain(Domain &domain, const unsigned int dim)
     {
       namespace occ = gmsh::model::occ;
+      if (domain.parameters->domain == "file")
+        return read_geometry(domain, dim);
       const auto &o = domain.origin;
       const auto &s = domain.size;
       if (domain.parameters->domain == "box")
@@ -737,7 +798,7 @@ namespace mbfem
 
     /** Cuts the domain by the planes and builds the base: the blocks. */
     int
-    cut_blocks(const Domain                   &domain,
+    cut_blocks(Domain                         &domain,
                const std::vector<JointPlanes> &sets,
                const unsigned int              dim,
                RockMassSummary                &summary)
@@ -770,7 +831,7 @@ namespace mbfem
                   const std::vector<JointPlanes> &sets,
                   const std::string              &msh_file)
   {
-    const Domain      domain = domain_of(parameters, dim);
+    Domain            domain = domain_of(parameters, dim);
     RockMassSummary   summary;
     const GmshSession session;
     try

@@ -50,8 +50,14 @@ namespace mbfem
      * the model's dimension by build_rock_mass()).
      */
     std::vector<double> origin, size;
-    /** "box" or "slope". */
+    /** "box", "slope" or "file". */
     std::string domain = "box";
+    /**
+     * For "file": a geometry gmsh reads (.brep, .step, .stp, or a .geo of
+     * the OpenCASCADE kernel), each of its volumes (surfaces in 2D) cut by
+     * the joints; resolved against the parameter file's folder.
+     */
+    std::string geometry_file;
     /**
      * The slope (Origin: the foot of its back, at the level of its toe):
      * height, dip of the face in degrees, width of the crest from the back
