@@ -105,9 +105,17 @@ run), and an exit code 3 there may be the model's (the certificate keeps
 cohesion the elastic model has lost; doc/state_iteration.md, "An exit
 code 3 can be the model's").
 
-  python3 scripts/random_incline_pairs.py [--count 100] [--seed 27]
-      [--mbfem build/mbfem] [--work DIR] [--variants corner,gap]
-      [--models 3,17] [--check-failures] [--test]
+  python3 scripts/random_incline_pairs.py [--count 100] [--seed N]
+      [--family issue27|broad] [--mbfem build/mbfem] [--work DIR]
+      [--variants corner,gap] [--models 3,17] [--check-failures] [--test]
+
+The seed is fresh at every run unless --seed (printed first; issue 27's
+runs in doc/ used --seed 27, the default then). --family broad is issue
+62's: the weight in full in increment 1 with the push zero there and
+ramped after it (so increment 1 is gravity alone from the unloaded
+state), 4 to 40 elements along each block's base joint (the other edges
+meshed with the finer of the two sizes), cohesion up to 50 kPa in half
+of the models, 1 to 10 increments (2 to 10 where pushed).
 
 Writes the .geo, mesh and parameter file of every run into the work
 folder (a fresh temporary one unless --work), runs mbfem on each, one at a
@@ -351,7 +359,25 @@ def resultant_inside(L, H, theta, P):
     return 0.15 * L < x_n < 0.85 * L
 
 
-def draw(rng):
+def draw_broad(rng):
+    """The broad family's parameters (issue 62): gravity in full in the
+    first increment, the push ramped from zero after it, 4 to 40 elements
+    along each block's base joint, cohesion up to 50 kPa in half of the
+    models."""
+    pushed = rng.random() < 0.5
+    return dict(L2=rng.uniform(0.5, 4.), H2=rng.uniform(0.3, 3.),
+                L3=rng.uniform(0.5, 4.), H3=rng.uniform(0.3, 3.),
+                theta=rng.uniform(0., 30.), phi=rng.uniform(10., 45.),
+                phi23=rng.uniform(10., 45.),
+                c=(rng.uniform(0., 50e3) if rng.random() < 0.5 else 0.),
+                p_lat=rng.uniform(0., 10e3) if pushed else 0.,
+                p=rng.choice([1, 2]),
+                n_inc=rng.randint(2, 10) if pushed else rng.randint(1, 10),
+                ramp=False, after=True,
+                n2=rng.randint(4, 40), n3=rng.randint(4, 40))
+
+
+def draw(rng, family="issue27"):
     """One model (both variants); resampled until it slides before it
     topples and its limits lie in (0.2, 5)."""
     while True:
@@ -362,7 +388,8 @@ def draw(rng):
                  c=(rng.uniform(0., 20e3) if rng.random() < 1. / 3 else 0.),
                  p_lat=(rng.uniform(0., 10e3) if rng.random() < 0.5 else 0.),
                  p=rng.choice([1, 2]), n_inc=rng.randint(1, 10),
-                 ramp=rng.random() < 0.5)
+                 ramp=rng.random() < 0.5) if family == "issue27" \
+            else draw_broad(rng)
         if not (resultant_inside(m["L2"], m["H2"], m["theta"],
                                  m["p_lat"] * m["H2"])
                 and resultant_inside(m["L3"], m["H3"], m["theta"], 0.)):
@@ -505,7 +532,16 @@ def write_geo(path, m, gap):
         for side, tag in tags:
             physical.setdefault(tag, []).append(abs(sides[side]))
 
-    n2, n3 = count(L2, p), count(L3, p)
+    if "n2" in m:
+        # Broad family: the base joints' element counts drawn, the other
+        # edges meshed with the finer of the two bases' element sizes.
+        n2, n3 = m["n2"], m["n3"]
+        h = min(L2 / n2, L3 / n3)
+
+        def count(length, p, least=2, most=40):
+            return max(least, min(most, int(round(length / h))))
+    else:
+        n2, n3 = count(L2, p), count(L3, p)
     nm, nd, nmarg = count(Hm, p), count(D, p, 1), count(MARGIN, p, 1)
     rect(0., L3, 0., Hm, n3, nm, 3, [("right", 3)] if gap else [])
     if H3 > Hm:
@@ -545,6 +581,28 @@ def write_mesh(folder, i, m, variant):
         subprocess.run(["gmsh", "-2", "-format", "msh22", geo, "-o", mesh],
                        check=True, stdout=subprocess.DEVNULL)
     return mesh
+
+
+def loads_after(m):
+    """The broad family's loads: the weight in full from the first
+    increment, the lateral pressure zero in it and ramped after it (so the
+    first increment is gravity alone from the unloaded state)."""
+    th = math.radians(m["theta"])
+    if m["p_lat"] == 0.:
+        return """  set Prescribed displacement boundary ids = 1: xy
+  set Gravity ramp time = 0
+"""
+    t1 = 1. / m["n_inc"]
+    ramp = "max(0, (t - %.12g) / %.12g)" % (t1, 1. - t1)
+    traction = "%.9g*%s; %.9g*%s" % (-m["p_lat"] * math.cos(th), ramp,
+                                     -m["p_lat"] * math.sin(th), ramp)
+    return """  set Prescribed displacement boundary ids = 1: xy
+  set Traction boundary ids = 2
+  set Gravity ramp time = 0
+  subsection Traction
+    set Function expression = %s
+  end
+""" % traction
 
 
 def write_case(folder, name, mesh, m, variant, factor):
@@ -591,7 +649,8 @@ subsection Output
   set Write VTU = false
 end
 """ % (variant, shown, factor, mesh, m["p"], UNIT_WEIGHT,
-            loads_2d(m), m["n_inc"], interfaces,
+            loads_after(m) if m.get("after") else loads_2d(m), m["n_inc"],
+            interfaces,
             search, mu, mu, mu23, c, c, name))
     return prm
 
@@ -749,10 +808,12 @@ def model_line(i, m, variant, reference, rounds, runs, test):
         extra += " (round %d, unbroken %.4f)" % (rounds, lim[variant])
     return ("pair %3d %-6s L2=%.2f H2=%.2f L3=%.2f H3=%.2f theta=%5.2f "
             "phi=%4.1f phi23=%4.1f c=%5.0f p_lat=%5.0f p=%d inc=%2d "
-            "ramp=%d F=%.4f%s | %s" % (
+            "ramp=%d%s F=%.4f%s | %s" % (
                 i, variant, m["L2"], m["H2"], m["L3"], m["H3"], m["theta"],
                 m["phi"], m["phi23"], m["c"], m["p_lat"], m["p"],
-                m["n_inc"], m["ramp"], lim[variant] if test else reference,
+                m["n_inc"], m["ramp"],
+                " n2=%d n3=%d" % (m["n2"], m["n3"]) if "n2" in m else "",
+                lim[variant] if test else reference,
                 extra, " | ".join("%.2f: %s" % (lam, runs[lam].describe(test))
                                   for lam in LAMBDAS)))
 
@@ -789,7 +850,17 @@ def summary(counts, variants, n_models, seconds):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--count", type=int, default=100)
-    parser.add_argument("--seed", type=int, default=27)
+    parser.add_argument("--seed", type=int, default=None,
+                        help="the draw's seed (default: a fresh one, "
+                        "printed; issue 27's stored runs used 27)")
+    parser.add_argument("--family", choices=("issue27", "broad"),
+                        default="issue27",
+                        help="issue27: the weight ramped or in full, push "
+                        "ramped from t = 0, 2-12 elements per edge, c up to "
+                        "20 kPa in a third; broad (issue 62): the weight "
+                        "in full in increment 1 with the push ramped after "
+                        "it, 4-40 elements along each base joint, c up to "
+                        "50 kPa in half")
     parser.add_argument("--mbfem", default=os.path.join(SOURCE, "build",
                                                         "mbfem"))
     parser.add_argument("--work", default="")
@@ -810,8 +881,12 @@ def main():
         sys.exit("--variants: corner, gap")
     work = args.work or tempfile.mkdtemp(prefix="mbfem-incline-pairs-")
     os.makedirs(work, exist_ok=True)
+    if args.seed is None:
+        args.seed = int.from_bytes(os.urandom(4), "little") % 1000000
+    print("family %s, seed %d (--seed %d --family %s repeats this draw)"
+          % (args.family, args.seed, args.seed, args.family), flush=True)
     rng = random.Random(args.seed)
-    models = [draw(rng) for _ in range(args.count)]
+    models = [draw(rng, args.family) for _ in range(args.count)]
     check_lines, checked = check_lp(random.Random(args.seed + 1), models)
     print("\n".join(check_lines), flush=True)
     if not checked:

@@ -243,22 +243,22 @@ namespace mbfem
     Point3
     cross(const Point3 &a, const Point3 &b)
     {
-      return {a[1] * b[2] - a[2] * b[1],
-              a[2] * b[0] - a[0] * b[2],
-              a[0] * b[1] - a[1] * b[0]};
+      return {{a[1] * b[2] - a[2] * b[1],
+               a[2] * b[0] - a[0] * b[2],
+               a[0] * b[1] - a[1] * b[0]}};
     }
 
     Point3
     unit(const Point3 &a)
     {
       const double n = std::sqrt(dot(a, a));
-      return {a[0] / n, a[1] / n, a[2] / n};
+      return {{a[0] / n, a[1] / n, a[2] / n}};
     }
 
     Point3
     along(const Point3 &x, const double t, const Point3 &v)
     {
-      return {x[0] + t * v[0], x[1] + t * v[1], x[2] + t * v[2]};
+      return {{x[0] + t * v[0], x[1] + t * v[1], x[2] + t * v[2]}};
     }
 
     /**
@@ -356,16 +356,16 @@ namespace mbfem
       namespace occ  = gmsh::model::occ;
       if (dim == 2)
         {
-          const Point3 t = {n[1], -n[0], 0.};
+          const Point3 t = {{n[1], -n[0], 0.}};
           const Point3 a = along(c, -half_width, t),
                        b = along(c, half_width, t);
           return {1,
                   occ::addLine(occ::addPoint(a[0], a[1], 0.),
                                occ::addPoint(b[0], b[1], 0.))};
         }
-      const Point3     u = unit(std::abs(n[2]) < 0.9 ? cross({0., 0., 1.}, n) :
-                                                   cross({1., 0., 0.}, n));
-      const Point3     v = cross(n, u);
+      const Point3 u = unit(std::abs(n[2]) < 0.9 ? cross({{0., 0., 1.}}, n) :
+                                                   cross({{1., 0., 0.}}, n));
+      const Point3 v = cross(n, u);
       std::vector<int> points, lines;
       for (const auto &[s, t] : std::vector<std::pair<double, double>>{
              {-1., -1.}, {1., -1.}, {1., 1.}, {-1., 1.}})
