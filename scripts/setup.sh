@@ -16,9 +16,10 @@ build_dir=${MBFEM_BUILD_DIR:-$source_dir/build}
 # numdiff and perl for deal.II's test macros; clang-format for the style
 # check; COIN-OR Clp for the statics certificate's linear program; MUMPS's
 # C API for the block flexibilities; matplotlib for the default example's
-# figure; Open MPI's mpirun for runs and tests on several ranks; the
+# figure; SciPy and CVXOPT for the scripts that check written contact
+# problems; Open MPI's mpirun for runs and tests on several ranks; the
 # compiler and build tools.
-packages="libdeal.ii-dev libmetis-dev libmumps-dev openmpi-bin libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format coinor-libclp-dev libgmsh-dev python3-matplotlib python3-scipy"
+packages="libdeal.ii-dev libmetis-dev libmumps-dev openmpi-bin libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format coinor-libclp-dev libgmsh-dev python3-matplotlib python3-scipy python3-cvxopt"
 
 missing=""
 for package in $packages; do

@@ -111,8 +111,7 @@ namespace mbfem
       text << message << "    Statics certificate at t = " << time << ": "
            << result.description << "\n";
       using Verdict = typename StaticAdmissibility<dim>::Verdict;
-      // The verdict first: whatever way the state iteration ended (a cycle,
-      // a singular state), the certificate is what proves it.
+      // The verdict first, however the state iteration ended.
       if (result.verdict == Verdict::none)
         {
           std::ostringstream verdict;
@@ -123,24 +122,25 @@ namespace mbfem
                   << text.str();
           throw Exceptions::ExcNoEquilibrium(verdict.str());
         }
-      // Statics with every joint the path broke counted unbroken admits
-      // forces, but the increment's own loads broke them on the way.
+      // Statics admits forces with every joint whole; the increment broke
+      // some on the way (the load path, De Saxce's fixed point).
       if (const auto path = contact->certify_path_breaking();
           path && path->verdict == Verdict::none)
         {
           std::ostringstream verdict;
-          verdict << "No equilibrium at t = " << time
-                  << " once the joints the load path broke have lost their "
-                     "strength: no contact forces within what is left of "
-                     "it balance the floating blocks' loads (the second "
-                     "statics certificate below). Breaking is for good, and "
-                     "the path broke them in the order of its events from "
-                     "an equilibrium (doc/decisions.md, \"Joints the load "
-                     "path broke\", says what this proves); rigid-block "
-                     "statics with those joints whole (the first "
-                     "certificate) cannot see this.\n    "
+          const std::string  by = contact->path_breaking_method();
+          verdict << "No equilibrium at t = " << time << " once the joints "
+                  << by
+                  << " broke have lost their strength: no contact forces "
+                     "within what is left of it balance the floating blocks' "
+                     "loads (the second statics certificate below). Breaking "
+                     "is for good, and the method broke them in the order of "
+                     "its events (doc/decisions.md, \"Joints the load path "
+                     "broke\", says what this proves); rigid-block statics "
+                     "with those joints whole (the first certificate) cannot "
+                     "see this.\n    "
                   << text.str() << "    Statics certificate at t = " << time
-                  << " after the load path: " << path->description << "\n"
+                  << " after " << by << ": " << path->description << "\n"
                   << write_problem();
           throw Exceptions::ExcNoEquilibriumAfterBreaking(verdict.str());
         }

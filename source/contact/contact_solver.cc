@@ -559,28 +559,56 @@ namespace mbfem
   std::optional<typename StaticAdmissibility<dim>::Result>
   ContactSolver<dim>::certify_path_breaking() const
   {
-    std::vector<unsigned int> broke;
-    for (unsigned int k = 0; k < path_broken.size(); ++k)
-      if (path_broken[k] && !current.broken[k] &&
-          contact_pairs[k].joint.has_strength())
-        broke.push_back(k);
-    if (broke.empty())
-      return std::nullopt;
+    // The load path's breaks first (it ran first, from an equilibrium),
+    // then De Saxce's fixed point's: the first that leaves statics no
+    // forces is the verdict, else the first that broke anything.
+    std::optional<typename StaticAdmissibility<dim>::Result> first;
+    for (unsigned int i = 0; i < path_broken.size(); ++i)
+      {
+        const BrokenRecord       &record = path_broken[i];
+        std::vector<unsigned int> broke;
+        for (unsigned int k = 0; k < record.broken.size(); ++k)
+          if (record.broken[k] && !current.broken[k] &&
+              contact_pairs[k].joint.has_strength())
+            broke.push_back(k);
+        if (broke.empty())
+          continue;
+        auto               result = certify_with(record.broken, false);
+        std::ostringstream text;
+        text << record.by << " broke " << broke.size()
+             << " pair(s) whose cohesion or tensile strength the certificate "
+                "above counts:";
+        for (unsigned int j = 0; j < broke.size() && j < 10; ++j)
+          text << "\n      pair " << broke[j] << " at ("
+               << contact_pairs[broke[j]].a.point << ")";
+        if (broke.size() > 10)
+          text << "\n      ... and " << broke.size() - 10 << " more";
+        text << "\n    Without their strength, " << result.description;
+        result.description = text.str();
+        if (result.verdict == StaticAdmissibility<dim>::Verdict::none)
+          {
+            path_record = i;
+            return result;
+          }
+        if (!first)
+          {
+            path_record = i;
+            first       = result;
+          }
+      }
+    return first;
+  }
 
-    auto               result = certify_with(path_broken, false);
-    std::ostringstream text;
-    text << "the load path (up to s = " << std::setprecision(6) << path_reach
-         << " of this increment) broke " << broke.size()
-         << " pair(s) whose cohesion or tensile strength the certificate "
-            "above counts:";
-    for (unsigned int i = 0; i < broke.size() && i < 10; ++i)
-      text << "\n      pair " << broke[i] << " at ("
-           << contact_pairs[broke[i]].a.point << ")";
-    if (broke.size() > 10)
-      text << "\n      ... and " << broke.size() - 10 << " more";
-    text << "\n    Without their strength, " << result.description;
-    result.description = text.str();
-    return result;
+
+
+  template <int dim>
+  std::string
+  ContactSolver<dim>::path_breaking_method() const
+  {
+    return path_record < path_broken.size() &&
+               !path_broken[path_record].load_path ?
+             "De Saxce's fixed point" :
+             "the load path";
   }
 
 

@@ -2,6 +2,9 @@
 #include <mbfem/contact/load_path.h>
 #include <mbfem/contact/load_path_state_method.h>
 
+#include <iomanip>
+#include <sstream>
+
 namespace mbfem
 {
   template <int dim>
@@ -71,6 +74,10 @@ namespace mbfem
         outcome.stopped_short  = true;
         outcome.stopped_broken = end.states.broken;
         outcome.stopped_at     = end.s;
+        std::ostringstream by;
+        by << "the load path (up to s = " << std::setprecision(6) << end.s
+           << " of this increment)";
+        outcome.stopped_by = by.str();
       }
     increment.set_load_fraction(1.);
     return outcome;

@@ -65,10 +65,9 @@ namespace mbfem
             return fast_iterations + path_switches;
           }
         if (outcome.stopped_short)
-          {
-            path_broken = outcome.stopped_broken;
-            path_reach  = outcome.stopped_at;
-          }
+          path_broken.push_back({outcome.stopped_broken,
+                                 outcome.stopped_by,
+                                 m->name == "load path"});
         if (!traits.primary)
           secondary.push_back(outcome.failure);
         if (traits.certificate_after_failure && m != methods.back())

@@ -209,6 +209,38 @@ namespace mbfem
       prm.leave_subsection();
     }
 
+    /** Contact/De Saxce. */
+    void
+    declare_de_saxce_entries(ParameterHandler &prm)
+    {
+      prm.enter_subsection("De Saxce");
+      {
+        prm.declare_entry(
+          "Maximum QPs",
+          "200",
+          Patterns::Integer(1),
+          "De Saxce's fixed point gives up after this many convex QPs on one "
+          "increment (it took 30 to 62 on the problems of "
+          "doc/state_iteration.md).");
+        prm.declare_entry(
+          "Maximum pairs",
+          "500",
+          Patterns::Integer(1),
+          "De Saxce's fixed point is not tried on an increment of more pairs: "
+          "its QPs are dense, each interior-point step an LU of about dim "
+          "times the pairs unknowns (173 pairs in 2D: 38 QPs in 0.9 s; the "
+          "time grows with the cube of the pairs).");
+        prm.declare_entry(
+          "Relaxation",
+          "0.5",
+          Patterns::Double(0.01, 1.),
+          "The shift of each pair's gap moves this fraction of the way to "
+          "its slip at each QP (1: no relaxation, which oscillates on "
+          "Goodman and Bray's column).");
+      }
+      prm.leave_subsection();
+    }
+
     /** Contact/Load continuation. */
     void
     declare_continuation_entries(ParameterHandler &prm)
@@ -236,6 +268,7 @@ namespace mbfem
     declare_order_entries(prm);
     declare_newton_entries(prm);
     declare_lemke_entries(prm);
+    declare_de_saxce_entries(prm);
     declare_continuation_entries(prm);
   }
 
@@ -259,6 +292,13 @@ namespace mbfem
     {
       lemke_max_variables       = prm.get_integer("Maximum variables");
       lemke_pivots_per_variable = prm.get_integer("Pivots per variable");
+    }
+    prm.leave_subsection();
+    prm.enter_subsection("De Saxce");
+    {
+      de_saxce_max_qps    = prm.get_integer("Maximum QPs");
+      de_saxce_relaxation = prm.get_double("Relaxation");
+      de_saxce_max_pairs  = prm.get_integer("Maximum pairs");
     }
     prm.leave_subsection();
     prm.enter_subsection("Load continuation");

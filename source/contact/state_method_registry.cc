@@ -4,6 +4,7 @@
 // state_method.h) and one line in the list below.
 
 #include <mbfem/contact/continuation_state_method.h>
+#include <mbfem/contact/de_saxce_state_method.h>
 #include <mbfem/contact/fast_state_method.h>
 #include <mbfem/contact/lemke_state_method.h>
 #include <mbfem/contact/load_path_state_method.h>
@@ -39,6 +40,7 @@ namespace mbfem
       entry<dim, LoadPathStateMethod<dim>>(),
       entry<dim, NewtonStateMethod<dim>>(),
       entry<dim, LemkeStateMethod<dim>>(),
+      entry<dim, DeSaxceStateMethod<dim>>(),
       entry<dim, ContinuationStateMethod<dim>>()};
     return methods;
   }

@@ -333,6 +333,13 @@ namespace mbfem
     certify_path_breaking() const;
 
     /**
+     * Which method broke the joints certify_path_breaking() reads: "the
+     * load path" or "De Saxce's fixed point".
+     */
+    std::string
+    path_breaking_method() const;
+
+    /**
      * Names of the floating blocks none of whose pairs stuck in the
      * increment just solved (all slip or open): such an increment may have
      * converged to a sliding state no forces can hold, and is certified.
@@ -516,11 +523,21 @@ namespace mbfem
                  const bool               with_mechanism_factor) const;
 
     /**
-     * The pairs' broken flags where the increment's load path stopped
-     * (empty if it did not run) and the load fraction it held up to.
+     * The pairs' broken flags where a method of the increment stopped
+     * after breaking joints (the load path, De Saxce's fixed point), in
+     * the order the methods ran, and who broke them
+     * (StateMethodOutcome::stopped_by); certify_path_breaking() tries them
+     * in turn.
      */
-    std::vector<bool> path_broken;
-    double            path_reach = 0.;
+    struct BrokenRecord
+    {
+      std::vector<bool> broken;
+      std::string       by;
+      bool              load_path = true;
+    };
+    std::vector<BrokenRecord> path_broken;
+    /** The record certify_path_breaking() proved "no equilibrium" with. */
+    mutable unsigned int path_record = 0;
 
     /** The arguments of the last restart(), for continue_from(). */
     double strength_factor = 1.;

@@ -33,6 +33,12 @@ namespace mbfem
     bool              stopped_short = false;
     std::vector<bool> stopped_broken;
     double            stopped_at = 0.;
+    /**
+     * Who broke the joints of stopped_broken, for the certificate's
+     * message ("the load path (up to s = 0.4 of this increment)", "De
+     * Saxce's fixed point").
+     */
+    std::string stopped_by;
   };
 
   /**
@@ -153,6 +159,7 @@ namespace mbfem
                                         "load path",
                                         "semismooth Newton",
                                         "Lemke",
+                                        "De Saxce",
                                         "load continuation"};
 
     /**
@@ -208,6 +215,16 @@ namespace mbfem
      * 0.8 on the problems of doc/state_iteration.md.
      */
     unsigned int lemke_pivots_per_variable = 10;
+
+    /**
+     * De Saxce's fixed point: the QPs of one increment before it gives up,
+     * and the relaxation omega of its shifts (without it, omega = 1, the
+     * fixed point oscillates on Goodman and Bray's column).
+     */
+    unsigned int de_saxce_max_qps    = 200;
+    double       de_saxce_relaxation = 0.5;
+    /** Not tried on an increment of more pairs: its QPs are dense. */
+    unsigned int de_saxce_max_pairs = 500;
   };
 } // namespace mbfem
 
