@@ -55,11 +55,15 @@ namespace mbfem
     r.dual.reinit(c.size());
     H.vmult(r.dual, x);
     r.dual += c;
-    A.Tvmult_add(r.dual, y);
+    // (Without equalities A is 0 x 0: deal.II's tables drop every
+    // dimension where one is zero.)
+    if (b.size() > 0)
+      A.Tvmult_add(r.dual, y);
     multiply_rows_transposed(z, tmp);
     r.dual += tmp;
     r.equality.reinit(b.size());
-    A.vmult(r.equality, x);
+    if (b.size() > 0)
+      A.vmult(r.equality, x);
     r.equality -= b;
     multiply_rows(x, r.inequality);
     r.inequality += s;
