@@ -410,8 +410,9 @@ namespace mbfem
         if (!solve_qp(shift))
           return false;
         ++qps;
-        const double scale = std::max(u.linfty_norm(), 1e-300);
-        change             = 0.;
+        const double scale =
+          std::max(u.size() > 0 ? u.linfty_norm() : 0., 1e-300);
+        change = 0.;
         for (unsigned int k = 0; k < problem.n_pairs; ++k)
           {
             Tensor<1, dim> slip;
@@ -478,7 +479,7 @@ namespace mbfem
   std::vector<unsigned int>
   DeSaxceMethod<dim>::newly_open() const
   {
-    const double              gap = answer_tolerance * u.linfty_norm();
+    const double gap = answer_tolerance * (u.size() > 0 ? u.linfty_norm() : 0.);
     std::vector<unsigned int> opened;
     for (unsigned int k = 0; k < problem.n_pairs; ++k)
       {
@@ -531,8 +532,8 @@ namespace mbfem
     // An interior-point answer satisfies each complementarity only to its
     // tolerance: of the two members (gap and normal force; slip and the
     // cone's room) the relatively larger one decides.
-    const double    u_max = std::max(u.linfty_norm(), 1e-300);
-    const double    r_max = std::max(r.linfty_norm(), 1e-300);
+    const double u_max = std::max(u.size() > 0 ? u.linfty_norm() : 0., 1e-300);
+    const double r_max = std::max(r.size() > 0 ? r.linfty_norm() : 0., 1e-300);
     StateTrial<dim> trial = committed;
     for (unsigned int k = 0; k < problem.n_pairs; ++k)
       {

@@ -20,6 +20,22 @@ namespace mbfem
           t = std::min(t, -v(i) / dv(i));
       return t;
     }
+
+    /** |v|_inf, 0 for an empty vector (which deal.II's norm refuses). */
+    double
+    largest(const Vector<double> &v)
+    {
+      return v.size() > 0 ? v.linfty_norm() : 0.;
+    }
+
+    /** v += t w, nothing for empty vectors (deal.II's add() refuses them:
+     * a QP without equalities or without inequalities). */
+    void
+    add(Vector<double> &v, const double t, const Vector<double> &w)
+    {
+      if (v.size() > 0)
+        v.add(t, w);
+    }
   } // namespace
 
 
@@ -63,10 +79,12 @@ namespace mbfem
     r.dual += tmp;
     r.equality.reinit(b.size());
     if (b.size() > 0)
-      A.vmult(r.equality, x);
-    r.equality -= b;
+      {
+        A.vmult(r.equality, x);
+        r.equality -= b;
+      }
     multiply_rows(x, r.inequality);
-    r.inequality += s;
+    add(r.inequality, 1., s);
     for (unsigned int i = 0; i < rows.size(); ++i)
       r.inequality(i) -= rows[i].bound;
   }
@@ -165,7 +183,7 @@ namespace mbfem
         z(i)          = 1.;
         largest_bound = std::max(largest_bound, std::abs(rows[i].bound));
       }
-    const double scale_c = 1. + c.linfty_norm(), scale_b = 1. + b.linfty_norm(),
+    const double scale_c = 1. + largest(c), scale_b = 1. + largest(b),
                  scale_d = 1. + largest_bound;
     Residuals                r;
     LAPACKFullMatrix<double> K;
@@ -174,9 +192,9 @@ namespace mbfem
       {
         residuals(s, r);
         const double mu   = (p > 0 ? (s * z) / p : 0.);
-        const double fits = std::max({r.dual.linfty_norm() / scale_c,
-                                      r.equality.linfty_norm() / scale_b,
-                                      r.inequality.linfty_norm() / scale_d});
+        const double fits = std::max({largest(r.dual) / scale_c,
+                                      largest(r.equality) / scale_b,
+                                      largest(r.inequality) / scale_d});
         if (fits < tolerance && mu < tolerance * scale_c * scale_d)
           return Status::optimal;
         // Past the round-off of the KKT solves the residuals grow again
@@ -186,7 +204,7 @@ namespace mbfem
             fits < 1e3 * tolerance)
           return Status::optimal;
         // Infeasibility or unboundedness shows as z growing without bound.
-        if (z.linfty_norm() > 1e14 * scale_c)
+        if (largest(z) > 1e14 * scale_c)
           return Status::infeasible;
         if (!factorise(s, K))
           return Status::stalled;
@@ -207,10 +225,10 @@ namespace mbfem
         newton_step(K, s, r, r_c, step);
         const double t = 0.99 * std::min(step_to_boundary(s, step.s),
                                          step_to_boundary(z, step.z));
-        x.add(t, step.x);
-        y.add(t, step.y);
-        z.add(t, step.z);
-        s.add(t, step.s);
+        add(x, t, step.x);
+        add(y, t, step.y);
+        add(z, t, step.z);
+        add(s, t, step.s);
       }
     return Status::stalled;
   }
