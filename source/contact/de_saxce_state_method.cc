@@ -73,7 +73,6 @@ namespace mbfem
             outcome.stopped_short = true;
             outcome.stopped_broken =
               method.broken_flags(increment.committed().broken);
-            outcome.stopped_at = 1.;
             outcome.stopped_by = "De Saxce's fixed point";
           }
       }

@@ -73,7 +73,6 @@ namespace mbfem
       {
         outcome.stopped_short  = true;
         outcome.stopped_broken = end.states.broken;
-        outcome.stopped_at     = end.s;
         std::ostringstream by;
         by << "the load path (up to s = " << std::setprecision(6) << end.s
            << " of this increment)";

@@ -24,21 +24,16 @@ namespace mbfem
     unsigned int iterations     = 0;
     std::string  failure;
     /**
-     * A method that follows the load from the last converged state and
-     * stopped short of the increment's end (the load path): the pairs'
-     * broken flags where it stopped and the load fraction it held up to,
-     * which the statics certificate of a failed increment reads
-     * (ContactSolver::certify_path_breaking()).
+     * A method that stopped after breaking joints (the load path short of
+     * the increment's end, De Saxce's fixed point where statics failed):
+     * the pairs' broken flags there, which the statics certificate of a
+     * failed increment reads (ContactSolver::certify_path_breaking()), and
+     * who broke them, for its message ("the load path (up to s = 0.4 of
+     * this increment)", "De Saxce's fixed point").
      */
     bool              stopped_short = false;
     std::vector<bool> stopped_broken;
-    double            stopped_at = 0.;
-    /**
-     * Who broke the joints of stopped_broken, for the certificate's
-     * message ("the load path (up to s = 0.4 of this increment)", "De
-     * Saxce's fixed point").
-     */
-    std::string stopped_by;
+    std::string       stopped_by;
   };
 
   /**
