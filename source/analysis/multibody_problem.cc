@@ -124,7 +124,7 @@ namespace mbfem
       build_rock_mass_mesh();
     TimerOutput::Scope t(model.timer, "mesh");
     Triangulation<dim> mesh;
-    create_mesh(model.parameters.mesh, mesh);
+    create_mesh(model.parameters.mesh, mesh, &joint_faces);
     // Everything the input names must exist before anything is built.
     check_ids_against_mesh(model.parameters, mesh);
 
@@ -340,8 +340,10 @@ namespace mbfem
   {
     std::vector<ContactPair<dim>> pairs;
     if (model.parameters.contact.declares_interfaces())
-      pairs =
-        find_contact_pairs(model.blocks, model.parameters.contact, model.pcout);
+      pairs = find_contact_pairs(model.blocks,
+                                 model.parameters.contact,
+                                 joint_faces,
+                                 model.pcout);
     check_blocks_held(pairs);
     factorize_blocks(pairs);
 

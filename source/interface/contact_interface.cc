@@ -2,6 +2,7 @@
 #include <mbfem/block/boundary_conditions.h>
 #include <mbfem/interface/contact_interface.h>
 #include <mbfem/interface/cross_points.h>
+#include <mbfem/interface/joint_assignment.h>
 #include <mbfem/interface/mortar.h>
 #include <mbfem/interface/mortar_cross_points.h>
 #include <mbfem/mesh/mesh.h>
@@ -68,7 +69,11 @@ namespace mbfem
         "through it: 2 or 3 numbers separated by spaces; default the "
         "rock mass's origin) make the set cut the domain into blocks; a "
         "point without a spacing is one plane, a fault "
-        "(doc/rock_mass.md).");
+        "(doc/rock_mass.md). The key group (a name) makes the set the "
+        "joints of a gmsh mesh's physical group of that name (curves in 2D, "
+        "surfaces in 3D, lying between the cells of two blocks): their "
+        "faces take the set's law whatever their orientation, before the "
+        "sets by orientation claim the rest (doc/jointed_rock.md).");
       prm.declare_entry("Cohesion",
                         "0",
                         Patterns::List(Patterns::Double(0.)),
@@ -313,14 +318,20 @@ namespace mbfem
       Point<dim>                               point;
       Tensor<1, dim>                           normal; // outward, summed
       double                                   area = 0.;
+      /** Its area on the faces of each mesh joint group (JointFaces). */
+      std::map<unsigned int, double> area_of_group;
     };
 
-    /** The nodes of @p block on faces with @p boundary_id. */
+    /**
+     * The nodes of @p block on faces with @p boundary_id, with the area
+     * each has on the faces of each group of @p joint_faces.
+     */
     template <int dim>
     void
     collect_nodes(const Block<dim>                &block,
                   const unsigned int               block_index,
                   const types::boundary_id         boundary_id,
+                  const JointFaces<dim>           &joint_faces,
                   std::vector<InterfaceNode<dim>> &nodes)
     {
       const auto &fe = block.get_fe();
@@ -343,6 +354,8 @@ namespace mbfem
             {
               fe_face_values.reinit(cell, f);
               cell->get_dof_indices(dof_indices);
+              const unsigned int group =
+                joint_faces.group_of(cell->face(f)->center());
               for (const unsigned int q :
                    fe_face_values.quadrature_point_indices())
                 for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
@@ -368,6 +381,8 @@ namespace mbfem
                         nodes.push_back(node);
                       }
                     nodes[it->second].area += fe_face_values.JxW(q);
+                    nodes[it->second].area_of_group[group] +=
+                      fe_face_values.JxW(q);
                     nodes[it->second].normal += fe_face_values.normal_vector(q);
                   }
             }
@@ -396,6 +411,7 @@ namespace mbfem
     void
     collect_sides(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
                   const InterfaceDeclaration                     &declaration,
+                  const JointFaces<dim>                          &joint_faces,
                   std::vector<InterfaceNode<dim>>                 side[2])
     {
       for (unsigned int s = 0; s < 2; ++s)
@@ -406,11 +422,12 @@ namespace mbfem
             (s == 0 ? declaration.side_b : declaration.side_a);
           for (unsigned int b = 0; b < blocks.size(); ++b)
             if (!declaration.by_blocks)
-              collect_nodes(*blocks[b], b, own, side[s]);
+              collect_nodes(*blocks[b], b, own, joint_faces, side[s]);
             else if (blocks[b]->get_id() == own)
               collect_nodes(*blocks[b],
                             b,
                             interface_boundary_id(other),
+                            joint_faces,
                             side[s]);
           AssertThrow(!side[s].empty(),
                       ExcMessage(
@@ -513,20 +530,48 @@ namespace mbfem
 
 
     /**
-     * The pairs of interface @p k, appended to @p pairs; throws with the
-     * nodes left without a partner or matched ambiguously.
+     * The mesh joint group of @p node: that of most of its area, and the
+     * area of each group on side a into @p groups.
+     */
+    template <int dim>
+    unsigned int
+    group_of_node(const InterfaceNode<dim> &node, PairGroups &groups)
+    {
+      unsigned int group = numbers::invalid_unsigned_int;
+      double       most  = 0.;
+      for (const auto &[g, area] : node.area_of_group)
+        {
+          if (g != numbers::invalid_unsigned_int)
+            groups.area_between_blocks[g] += area;
+          if (area > most)
+            {
+              most  = area;
+              group = g;
+            }
+        }
+      return group;
+    }
+
+
+
+    /**
+     * The pairs of interface @p k, appended to @p pairs (their joint
+     * groups to @p groups); throws with the nodes left without a partner or
+     * matched ambiguously.
      */
     template <int dim>
     void
     pair_interface(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
                    const ContactParameters                        &parameters,
+                   const JointFaces<dim>                          &joint_faces,
                    const unsigned int                              k,
                    const double                                    coincident,
-                   std::vector<ContactPair<dim>>                  &pairs)
+                   std::vector<ContactPair<dim>>                  &pairs,
+                   PairGroups                                     &groups)
     {
       const InterfaceDeclaration     &declaration = parameters.interfaces[k];
       std::vector<InterfaceNode<dim>> side[2];
-      collect_sides(blocks, declaration, side);
+      collect_sides(blocks, declaration, joint_faces, side);
       const double reach = std::max(coincident, parameters.search_distance);
       std::vector<unsigned int> nearest[2];
       std::vector<double>       distance[2];
@@ -546,6 +591,7 @@ namespace mbfem
               b_used[j] = true;
               pairs.push_back(make_pair_of_nodes(
                 side[0][i], side[1][j], distance[0][i], coincident, k));
+              groups.of_pair.push_back(group_of_node(side[0][i], groups));
             }
         }
       for (unsigned int j = 0; j < side[1].size(); ++j)
@@ -614,38 +660,6 @@ namespace mbfem
       parameters.interfaces.insert(parameters.interfaces.begin(),
                                    found.begin(),
                                    found.end());
-    }
-
-
-
-    /**
-     * The law of found interface @p k: that of the first joint set that
-     * contains its mean plane (area-weighted normal of its pairs), or the
-     * default. Sets the interface's and its pairs' laws.
-     */
-    template <int dim>
-    void
-    assign_joint_set(ContactParameters             &parameters,
-                     const unsigned int             k,
-                     std::vector<ContactPair<dim>> &pairs,
-                     const unsigned int             first_pair)
-    {
-      InterfaceDeclaration &declaration = parameters.interfaces[k];
-      if (declaration.found)
-        {
-          Tensor<1, dim> normal;
-          for (unsigned int p = first_pair; p < pairs.size(); ++p)
-            normal += pairs[p].area * pairs[p].frame[0];
-          for (const auto &set : parameters.joint_sets)
-            if (set.contains(normal))
-              {
-                declaration.joint     = set.joint;
-                declaration.joint_set = set.name;
-                break;
-              }
-        }
-      for (unsigned int p = first_pair; p < pairs.size(); ++p)
-        pairs[p].joint = declaration.joint;
     }
 
 
@@ -764,7 +778,8 @@ namespace mbfem
   std::vector<ContactPair<dim>>
   find_contact_pairs(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
                      ContactParameters                              &parameters,
-                     ConditionalOStream                             &pcout)
+                     const JointFaces<dim> &joint_faces,
+                     ConditionalOStream    &pcout)
   {
     if (parameters.all_shared_faces &&
         std::none_of(parameters.interfaces.begin(),
@@ -779,9 +794,10 @@ namespace mbfem
 
     std::vector<ContactPair<dim>>        pairs;
     std::vector<std::vector<Point<dim>>> unpaired(parameters.interfaces.size());
+    PairGroups                           groups;
+    groups.area_between_blocks.assign(joint_faces.n_groups(), 0.);
     for (unsigned int k = 0; k < parameters.interfaces.size(); ++k)
       {
-        const unsigned int first = pairs.size();
         if (parameters.interfaces[k].mortar)
           unpaired[k] =
             mortar_pairs(blocks,
@@ -792,9 +808,12 @@ namespace mbfem
                          parameters.mortar_on_finer_side,
                          pairs);
         else
-          pair_interface(blocks, parameters, k, coincident, pairs);
-        assign_joint_set(parameters, k, pairs, first);
+          pair_interface(
+            blocks, parameters, joint_faces, k, coincident, pairs, groups);
+        // Mortar pairs tie a node to a segment: no joint group of their own.
+        groups.of_pair.resize(pairs.size(), numbers::invalid_unsigned_int);
       }
+    assign_joint_sets(parameters, joint_faces, groups, pairs, pcout);
     print_interfaces(parameters, pairs, unpaired, pcout);
     check_mortar_cross_points(
       blocks, pairs, parameters.interfaces, coincident, pcout);
@@ -847,9 +866,11 @@ namespace mbfem
   template std::vector<ContactPair<2>>
   find_contact_pairs(const std::vector<std::unique_ptr<Block<2>>> &,
                      ContactParameters &,
+                     const JointFaces<2> &,
                      ConditionalOStream &);
   template std::vector<ContactPair<3>>
   find_contact_pairs(const std::vector<std::unique_ptr<Block<3>>> &,
                      ContactParameters &,
+                     const JointFaces<3> &,
                      ConditionalOStream &);
 } // namespace mbfem

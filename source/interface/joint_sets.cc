@@ -43,6 +43,11 @@ namespace mbfem
     void
     read_item(const std::string &item, const std::string &text, JointSet &set)
     {
+      if (item.rfind("group ", 0) == 0)
+        {
+          set.group = Utilities::trim(item.substr(6));
+          return;
+        }
       if (item.rfind("point ", 0) == 0)
         {
           std::istringstream in(item.substr(6));
@@ -98,7 +103,7 @@ namespace mbfem
       else
         check(false,
               "the keys are dip, dip direction, tolerance, friction, "
-              "cohesion, tensile strength, spacing, point.");
+              "cohesion, tensile strength, spacing, point, group.");
     }
   } // namespace
 

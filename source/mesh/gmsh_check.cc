@@ -2,6 +2,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <climits>
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -45,6 +47,10 @@ namespace mbfem
       int               type;
       bool              in_physical_group;
       std::vector<long> nodes;
+      /** Its physical tag (0: none). */
+      long group = 0;
+      /** Version 4.1: the line of the head of its block of $Elements. */
+      unsigned int block_line = 0;
     };
 
     /** What the checks need of a file: its nodes and its elements. */
@@ -54,6 +60,8 @@ namespace mbfem
       std::map<std::string, Section>        sections;
       std::map<long, std::array<double, 3>> nodes;
       std::vector<Element>                  elements;
+      /** Physical names by (dimension, tag). */
+      std::map<std::pair<long, long>, std::string> names;
 
       [[noreturn]] void
       fail(const unsigned int line, const std::string &what) const
@@ -276,7 +284,7 @@ namespace mbfem
     }
 
     void
-    check_physical_names(const GmshFile &file)
+    read_physical_names(GmshFile &file)
     {
       if (file.sections.count("PhysicalNames") == 0)
         return;
@@ -290,6 +298,12 @@ namespace mbfem
             file.fail(line.number,
                       "a physical name needs 'dimension tag \"name\"' "
                       "(with both quotes).");
+          std::istringstream in(line.text);
+          long               dim = 0, tag = 0;
+          in >> dim >> tag;
+          const auto quote = line.text.find('"');
+          file.names[{dim, tag}] =
+            line.text.substr(quote + 1, line.text.rfind('"') - quote - 1);
         }
     }
 
@@ -321,11 +335,12 @@ namespace mbfem
     add_element(GmshFile                       &file,
                 const Line                     &line,
                 const long                      type,
-                const bool                      in_physical_group,
+                const long                      group,
                 const std::vector<std::string> &fields,
                 const std::size_t               first_node)
     {
-      const auto t = element_types.find(static_cast<int>(
+      const bool in_physical_group = group > 0;
+      const auto t                 = element_types.find(static_cast<int>(
         std::max(std::min(type, long(INT_MAX)), long(INT_MIN))));
       if (t == element_types.end())
         file.fail(line.number,
@@ -336,7 +351,7 @@ namespace mbfem
         file.fail(line.number,
                   "an element of type " + std::to_string(type) + " needs " +
                     std::to_string(t->second.first) + " nodes.");
-      Element element{line.number, t->first, in_physical_group, {}};
+      Element element{line.number, t->first, in_physical_group, {}, group};
       for (std::size_t i = first_node; i < fields.size(); ++i)
         element.nodes.push_back(whole_number(file, line, fields[i]));
       file.elements.push_back(element);
@@ -363,22 +378,22 @@ namespace mbfem
             whole_number(file, line, field(file, line, fields, 2));
           if (n_tags < 0 || fields.size() < 3 + std::size_t(n_tags))
             file.fail(line.number, "the element has fewer tags than it says.");
-          const bool physical =
-            n_tags > 0 && whole_number(file, line, fields[3]) > 0;
+          const long group =
+            n_tags > 0 ? std::max(whole_number(file, line, fields[3]), 0l) : 0;
           add_element(file,
                       line,
                       whole_number(file, line, fields[1]),
-                      physical,
+                      group,
                       fields,
                       3 + n_tags);
         }
     }
 
-    /** Version 4.1, $Entities: whether each (dim, tag) is in a group. */
-    std::map<std::pair<long, long>, bool>
+    /** Version 4.1, $Entities: the first physical tag of each (dim, tag). */
+    std::map<std::pair<long, long>, long>
     read_entities(const GmshFile &file)
     {
-      std::map<std::pair<long, long>, bool> physical;
+      std::map<std::pair<long, long>, long> physical;
       if (file.sections.count("Entities") == 0)
         return physical;
       const Line &counts = line_at(file, "Entities", 0);
@@ -396,7 +411,12 @@ namespace mbfem
             const long        tag =
               whole_number(file, line, field(file, line, fields, 0));
             physical[{dim, tag}] =
-              whole_number(file, line, field(file, line, fields, at)) > 0;
+              whole_number(file, line, field(file, line, fields, at)) > 0 ?
+                std::max(whole_number(file,
+                                      line,
+                                      field(file, line, fields, at + 1)),
+                         0l) :
+                0;
           }
       return physical;
     }
@@ -426,7 +446,8 @@ namespace mbfem
       i = 1;
       for (long b = count_at(file, "Elements", 0); b > 0; --b)
         {
-          const auto head = block_head(file, "Elements", i++);
+          const unsigned int head_line = line_at(file, "Elements", i).number;
+          const auto         head      = block_head(file, "Elements", i++);
           for (long k = head[3]; k > 0; --k, ++i)
             {
               const Line &line = line_at(file, "Elements", i);
@@ -436,6 +457,7 @@ namespace mbfem
                           physical[{head[0], head[1]}],
                           fields_of(line.text),
                           1);
+              file.elements.back().block_line = head_line;
             }
         }
     }
@@ -543,11 +565,155 @@ namespace mbfem
                     " nodes belong to no element: were elements removed "
                     "from the file?");
     }
+
+
+
+    /** The corners of the faces of a quadrilateral or hexahedron (gmsh). */
+    const std::vector<std::vector<unsigned int>> &
+    corners_of_faces(const unsigned int dim)
+    {
+      static const std::vector<std::vector<unsigned int>> lines = {{0, 1},
+                                                                   {1, 2},
+                                                                   {2, 3},
+                                                                   {3, 0}};
+      static const std::vector<std::vector<unsigned int>> quads = {
+        {0, 1, 2, 3},
+        {4, 5, 6, 7},
+        {0, 1, 5, 4},
+        {1, 2, 6, 5},
+        {2, 3, 7, 6},
+        {3, 0, 4, 7}};
+      return dim == 2 ? lines : quads;
+    }
+
+    /** A face by its corner nodes, in any order. */
+    using FaceKey = std::array<long, 4>;
+
+    FaceKey
+    face_key(const std::vector<long> &nodes, const unsigned int n_corners)
+    {
+      FaceKey key{{-1, -1, -1, -1}};
+      std::copy(nodes.begin(), nodes.begin() + n_corners, key.begin());
+      std::sort(key.begin(), key.begin() + n_corners);
+      return key;
+    }
+
+    /**
+     * The elements of dimension dim-1 in a physical group that lie between
+     * two cells: joints of a hand-made mesh, which deal.II's GridIn refuses
+     * ("a boundary id for an internal face").
+     */
+    std::vector<const Element *>
+    interior_group_elements(const GmshFile &file, const unsigned int dim)
+    {
+      const unsigned int     n_cell_corners = (dim == 2 ? 4 : 8);
+      const unsigned int     n_face_corners = (dim == 2 ? 2 : 4);
+      std::map<FaceKey, int> cells_at;
+      for (const auto &element : file.elements)
+        if (element_types.at(element.type).second == int(dim) &&
+            element.nodes.size() >= n_cell_corners)
+          for (const auto &face : corners_of_faces(dim))
+            {
+              std::vector<long> corners;
+              for (const unsigned int v : face)
+                corners.push_back(element.nodes[v]);
+              ++cells_at[face_key(corners, n_face_corners)];
+            }
+      std::vector<const Element *> interior;
+      for (const auto &element : file.elements)
+        if (element.group > 0 &&
+            element_types.at(element.type).second == int(dim) - 1 &&
+            element.nodes.size() >= n_face_corners)
+          {
+            const auto at =
+              cells_at.find(face_key(element.nodes, n_face_corners));
+            if (at != cells_at.end() && at->second >= 2)
+              interior.push_back(&element);
+          }
+      return interior;
+    }
+
+    /**
+     * The text of @p file without the elements on the lines @p removed,
+     * with the counts of $Elements (and of its blocks, version 4.1) reduced
+     * to match.
+     */
+    std::string
+    text_without(const GmshFile                     &file,
+                 const std::vector<const Element *> &removed)
+    {
+      std::set<unsigned int>       lines;
+      std::map<unsigned int, long> per_block;
+      for (const Element *element : removed)
+        {
+          lines.insert(element->line);
+          ++per_block[element->block_line];
+        }
+      std::vector<std::pair<unsigned int, std::string>> order;
+      for (const auto &[name, section] : file.sections)
+        order.emplace_back(section.opened_at, name);
+      std::sort(order.begin(), order.end());
+      std::ostringstream out;
+      for (const auto &[opened_at, name] : order)
+        {
+          out << '$' << name << '\n';
+          const Section &section = file.sections.at(name);
+          for (std::size_t i = 0; i < section.lines.size(); ++i)
+            {
+              const Line &line = section.lines[i];
+              if (name != "Elements")
+                out << line.text << '\n';
+              else if (lines.count(line.number) > 0)
+                continue;
+              else if (i == 0 || per_block.count(line.number) > 0)
+                {
+                  // The count of all elements (first field in 2.2, second
+                  // in 4.1), or the count of a block (its fourth field).
+                  auto         fields = fields_of(line.text);
+                  const size_t at = (i > 0 ? 3 : fields.size() == 1 ? 0 : 1);
+                  const long   n =
+                    (i > 0 ? per_block.at(line.number) : long(removed.size()));
+                  fields[at] = std::to_string(std::stol(fields[at]) - n);
+                  for (const auto &f : fields)
+                    out << f << ' ';
+                  out << '\n';
+                }
+              else
+                out << line.text << '\n';
+            }
+          out << "$End" << name << '\n';
+        }
+      return out.str();
+    }
+
+    /** The joints of @p file: names, corners, and the text GridIn reads. */
+    GmshJointElements
+    joint_elements(const GmshFile &file, const unsigned int dim)
+    {
+      GmshJointElements joints;
+      const auto        interior = interior_group_elements(file, dim);
+      if (interior.empty())
+        return joints;
+      const unsigned int n_face_corners = (dim == 2 ? 2 : 4);
+      for (const Element *element : interior)
+        {
+          const auto name = file.names.find({dim - 1, element->group});
+          joints.names[element->group] =
+            (name != file.names.end() ? name->second :
+                                        std::to_string(element->group));
+          std::vector<std::array<double, 3>> corners;
+          for (unsigned int v = 0; v < n_face_corners; ++v)
+            corners.push_back(file.nodes.at(element->nodes[v]));
+          joints.elements.emplace_back(element->group, corners);
+        }
+      joints.text_for_grid_in = text_without(file, interior);
+      return joints;
+    }
   } // namespace
 
 
 
-  void
+  GmshJointElements
   check_gmsh_file(const std::string &path,
                   const unsigned int dim,
                   const bool         groups_give_blocks)
@@ -556,11 +722,12 @@ namespace mbfem
     file.path = path;
     read_sections(file);
     const int version = check_format(file);
-    check_physical_names(file);
+    read_physical_names(file);
     if (version == 2)
       read_version_2(file);
     else
       read_version_4(file);
     check_elements(file, dim, groups_give_blocks);
+    return joint_elements(file, dim);
   }
 } // namespace mbfem

@@ -285,9 +285,13 @@ namespace mbfem
 
   namespace
   {
-    /** Reads the gmsh file of 'Mesh/Mesh file' into @p triangulation. */
+    /**
+     * Reads the gmsh file of 'Mesh/Mesh file' into @p triangulation;
+     * returns its joints (faces between cells in physical groups), which
+     * GridIn does not read.
+     */
     template <int dim>
-    void
+    JointFaces<dim>
     read_gmsh_mesh(const MeshParameters &parameters,
                    Triangulation<dim>   &triangulation)
     {
@@ -303,16 +307,20 @@ namespace mbfem
                                .string() +
                              "> (a relative path is taken from the folder "
                              "of the parameter file that sets it)."));
-      check_gmsh_file(parameters.mesh_file,
-                      dim,
-                      parameters.block_id_function.empty());
-      GridIn<dim>       grid_in(triangulation);
-      const std::string what = "Could not read the gmsh file <" +
+      const GmshJointElements joints =
+        check_gmsh_file(parameters.mesh_file,
+                        dim,
+                        parameters.block_id_function.empty());
+      std::istringstream without_joints(joints.text_for_grid_in);
+      GridIn<dim>        grid_in(triangulation);
+      const std::string  what = "Could not read the gmsh file <" +
                                parameters.mesh_file + "> as a " +
                                std::to_string(dim) + "D mesh: ";
       try
         {
-          grid_in.read_msh(in);
+          grid_in.read_msh(joints.elements.empty() ?
+                             static_cast<std::istream &>(in) :
+                             without_joints);
         }
       catch (ExceptionBase &e)
         {
@@ -322,6 +330,7 @@ namespace mbfem
         {
           AssertThrow(false, ExcMessage(what + e.what()));
         }
+      return JointFaces<dim>(joints);
     }
 
 
@@ -457,12 +466,16 @@ namespace mbfem
   template <int dim>
   void
   create_mesh(const MeshParameters &parameters,
-              Triangulation<dim>   &triangulation)
+              Triangulation<dim>   &triangulation,
+              JointFaces<dim>      *joint_faces)
   {
+    JointFaces<dim> joints;
     if (parameters.source == "gmsh" || parameters.source == "rock mass")
-      read_gmsh_mesh(parameters, triangulation);
+      joints = read_gmsh_mesh(parameters, triangulation);
     else
       generate_mesh(parameters, triangulation);
+    if (joint_faces != nullptr)
+      *joint_faces = joints;
     AssertThrow(triangulation.all_reference_cells_are_hyper_cube(),
                 ExcMessage(
                   "The mesh " +
@@ -714,9 +727,9 @@ namespace mbfem
 
 
   template void
-  create_mesh(const MeshParameters &, Triangulation<2> &);
+  create_mesh(const MeshParameters &, Triangulation<2> &, JointFaces<2> *);
   template void
-  create_mesh(const MeshParameters &, Triangulation<3> &);
+  create_mesh(const MeshParameters &, Triangulation<3> &, JointFaces<3> *);
   template std::vector<types::material_id>
   block_ids(const Triangulation<2> &);
   template std::vector<types::material_id>

@@ -120,7 +120,9 @@ namespace mbfem
     void
     do_increment(const unsigned int k);
 
-    Model<dim>         model;
+    Model<dim> model;
+    /** The gmsh file's joints in physical groups (make_blocks()). */
+    JointFaces<dim>    joint_faces;
     StageSequence<dim> stages;
     RunReport<dim>     report;
     LoadSteps<dim>     steps;

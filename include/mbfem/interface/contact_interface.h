@@ -4,6 +4,7 @@
 #include <mbfem/block/block.h>
 #include <mbfem/interface/joint_law.h>
 #include <mbfem/interface/joint_sets.h>
+#include <mbfem/mesh/joint_faces.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
@@ -59,7 +60,7 @@ namespace mbfem
     bool all_shared_faces = false;
     /** Law of the found interfaces that no joint set claims. */
     JointLaw default_joint;
-    /** Joint sets of the found interfaces, by orientation. */
+    /** Joint sets of the found interfaces, by orientation or mesh group. */
     std::vector<JointSet> joint_sets;
     double                search_distance = 0.;
     /** 'Mortar side = finer': the multipliers on the side with more nodes. */
@@ -189,12 +190,15 @@ namespace mbfem
    * and coordinates. Pairs on a support oblique to their interface are
    * tied (ContactPair::tied). Where three or more blocks meet, the pairs
    * are made free of loops by resolve_cross_points() (cross_points.h).
+   * The pairs of found interfaces on faces of @p joint_faces' groups take
+   * the law of the joint set that names the group (assign_joint_sets()).
    */
   template <int dim>
   std::vector<ContactPair<dim>>
   find_contact_pairs(const std::vector<std::unique_ptr<Block<dim>>> &blocks,
                      ContactParameters                              &parameters,
-                     ConditionalOStream                             &pcout);
+                     const JointFaces<dim> &joint_faces,
+                     ConditionalOStream    &pcout);
 } // namespace mbfem
 
 #endif

@@ -48,6 +48,13 @@ namespace mbfem
      */
     double              spacing = 0.;
     std::vector<double> point;
+    /**
+     * 'group name': the set is the joints of a mesh file's physical group
+     * of that name (curves in 2D, surfaces in 3D, between blocks), and
+     * claims their faces whatever their orientation; empty: a set by
+     * orientation.
+     */
+    std::string group;
 
     /** Upward unit normal of the set's plane. */
     template <int dim>
@@ -63,8 +70,8 @@ namespace mbfem
   /**
    * Reads 'Contact/Joint sets': sets separated by ';', each
    * 'name: key value, key value, ...' with the keys dip, dip direction,
-   * tolerance (degrees), friction, cohesion, tensile strength, spacing and
-   * point (2 or 3 numbers separated by spaces). Strength
+   * tolerance (degrees), friction, cohesion, tensile strength, spacing,
+   * point (2 or 3 numbers separated by spaces) and group (a name). Strength
    * values not given are those of @p defaults. Throws with the text that
    * could not be read.
    */

@@ -1,6 +1,7 @@
 #ifndef mbfem_mesh_mesh_h
 #define mbfem_mesh_mesh_h
 
+#include <mbfem/mesh/joint_faces.h>
 #include <mbfem/mesh/rock_mass.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -83,11 +84,16 @@ namespace mbfem
                 const types::material_id  id,
                 Triangulation<dim>       &block);
 
-  /** Builds the mesh described by @p parameters into @p triangulation. */
+  /**
+   * Builds the mesh described by @p parameters into @p triangulation, and
+   * into @p joint_faces (if given) the faces of a gmsh file's joints in
+   * physical groups.
+   */
   template <int dim>
   void
   create_mesh(const MeshParameters &parameters,
-              Triangulation<dim>   &triangulation);
+              Triangulation<dim>   &triangulation,
+              JointFaces<dim>      *joint_faces = nullptr);
 
   /** The boundary ids present on the boundary of @p triangulation. */
   template <int dim>
