@@ -19,7 +19,7 @@ build_dir=${MBFEM_BUILD_DIR:-$source_dir/build}
 # figure; SciPy and CVXOPT for the scripts that check written contact
 # problems; Open MPI's mpirun for runs and tests on several ranks; the
 # compiler and build tools.
-packages="libdeal.ii-dev libmetis-dev libmumps-dev openmpi-bin libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format coinor-libclp-dev libgmsh-dev python3-matplotlib python3-scipy python3-cvxopt"
+packages="libdeal.ii-dev libmetis-dev libmumps-dev openmpi-bin libopenblas0-pthread gmsh numdiff perl cmake make g++ clang-format coinor-libclp-dev libgmsh-dev libopenturns-dev python3-matplotlib python3-scipy python3-cvxopt"
 
 missing=""
 for package in $packages; do

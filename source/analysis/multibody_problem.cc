@@ -2,6 +2,7 @@
 #include <mbfem/analysis/input_checks.h>
 #include <mbfem/analysis/multibody_problem.h>
 #include <mbfem/analysis/parameters.h>
+#include <mbfem/analysis/reliability_run.h>
 #include <mbfem/analysis/strength_reduction_run.h>
 #include <mbfem/base/exceptions.h>
 #include <mbfem/base/files.h>
@@ -272,12 +273,15 @@ namespace mbfem
     make_contact();
     stop_if_signalled(-1);
     report.make_writers();
+    StrengthReductionRun<dim> strength_reduction(
+      model,
+      stages,
+      [this](const unsigned int k) { do_increment(k); },
+      [this]() { run_load_history(); });
     if (model.parameters.run.mode == "strength reduction")
-      StrengthReductionRun<dim>(
-        model,
-        stages,
-        [this](const unsigned int k) { do_increment(k); },
-        [this]() { run_load_history(); })
+      strength_reduction.run(setup_clock.wall_time());
+    else if (model.parameters.run.mode == "reliability")
+      ReliabilityRun<dim>(model, stages, strength_reduction)
         .run(setup_clock.wall_time());
     else
       run_load_history();

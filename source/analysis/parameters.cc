@@ -21,14 +21,17 @@ namespace mbfem
     prm.declare_entry(
       "Mode",
       "simulation",
-      Patterns::Selection("simulation|order study|strength reduction"),
+      Patterns::Selection(
+        "simulation|order study|strength reduction|reliability"),
       "'simulation': run the load history once. 'order study': solve the "
       "problem for every degree and refinement level in subsection 'Order "
       "study' and tabulate the errors against subsection 'Exact solution'. "
       "'strength reduction': the factor of safety F, the largest divisor of "
       "the joints' tan(phi) and cohesion at which the load history still "
       "converges (subsection 'Strength reduction'); the results written are "
-      "those at F.");
+      "those at F. 'reliability': samples of random joint strengths "
+      "(subsection 'Reliability'), each sample's factor of safety or its "
+      "verdict at F = 1, and P(F < 1).");
     prm.declare_entry(
       "Test mode",
       "false",
@@ -69,8 +72,75 @@ namespace mbfem
     Excavation::declare_parameters(prm);
     PlasticityParameters::declare_parameters(prm);
     StrengthReductionParameters::declare_parameters(prm);
+    ReliabilityParameters::declare_parameters(prm);
     WaterPressureParameters<dim>::declare_parameters(prm);
   }
+
+
+
+  namespace
+  {
+    /**
+     * The modes that change the joints' strength (strength reduction,
+     * reliability) need interfaces and the condensed formulation, and no
+     * plasticity; entries of a mode not run are refused, not ignored.
+     */
+    template <int dim>
+    void
+    check_strength_modes(const Parameters<dim> &parameters)
+    {
+      const bool reduces = parameters.run.mode == "strength reduction" ||
+                           parameters.run.mode == "reliability";
+      const bool reliability = (parameters.run.mode == "reliability");
+      AssertThrow(!reduces || parameters.contact.declares_interfaces(),
+                  ExcMessage(
+                    "Mode = " + parameters.run.mode +
+                    (reliability ? " changes" : " divides") +
+                    " the joints' strength, but the model declares no contact "
+                    "interface (Contact/Interfaces)."));
+      AssertThrow(
+        !reduces || parameters.contact_solver.formulation ==
+                      ContactSolverParameters::Formulation::condensed,
+        ExcMessage(
+          "Mode = " + parameters.run.mode +
+          " runs the condensed formulation only: the monolithic one has "
+          "neither the load path nor the Newton method, "
+          "so near the limit it would decide F, not the "
+          "model. Set 'Contact/Formulation = condensed'."));
+      AssertThrow(!parameters.output.write_contact_problems ||
+                    parameters.contact_solver.formulation !=
+                      ContactSolverParameters::Formulation::monolithic,
+                  ExcMessage("Output/Write contact problems writes the "
+                             "condensed problem, which the monolithic "
+                             "formulation does not form. Set "
+                             "'Contact/Formulation = condensed' or 'both'."));
+      // Entries read only by strength reduction would be ignored silently.
+      AssertThrow(parameters.run.mode == "strength reduction" ||
+                    parameters.strength_reduction.closed_form_text.empty(),
+                  ExcMessage("'Strength reduction/Closed-form factor of "
+                             "safety' is given, but Mode = " +
+                             parameters.run.mode +
+                             " runs no strength reduction: set Mode = "
+                             "strength reduction, or remove the entry."));
+      AssertThrow(
+        !reduces || !parameters.plasticity.enabled,
+        ExcMessage(
+          "Mode = " + parameters.run.mode +
+          (reliability ? " changes" : " reduces") +
+          " the joints' strength only; with 'Plasticity/Enabled = true' "
+          "the rock's strength would stay as it is, and "
+          "the plastic strain would have to be reset per "
+          "trial. Not supported yet: run the plastic model "
+          "at chosen strengths with Mode = simulation."));
+      AssertThrow(parameters.run.mode == "reliability" ||
+                    parameters.reliability.variables.empty(),
+                  ExcMessage("'Reliability/Random variables' is given, but "
+                             "Mode = " +
+                             parameters.run.mode +
+                             ": set Mode = reliability, or remove the "
+                             "entry."));
+    }
+  } // namespace
 
 
 
@@ -96,46 +166,13 @@ namespace mbfem
     excavation.parse_parameters(prm);
     plasticity.parse_parameters(prm);
     strength_reduction.parse_parameters(prm);
+    reliability.parse_parameters(prm);
     water_pressure.parse_parameters(prm);
     AssertThrow(!water_pressure.enabled() || contact.declares_interfaces(),
                 ExcMessage("Water pressure/Interfaces names wet joints, but "
                            "the model declares no contact interface "
                            "(Contact/Interfaces)."));
-    AssertThrow(run.mode != "strength reduction" ||
-                  contact.declares_interfaces(),
-                ExcMessage("Mode = strength reduction divides the joints' "
-                           "strength, but the model declares no contact "
-                           "interface (Contact/Interfaces)."));
-    AssertThrow(run.mode != "strength reduction" ||
-                  contact_solver.formulation ==
-                    ContactSolverParameters::Formulation::condensed,
-                ExcMessage("Mode = strength reduction runs the condensed "
-                           "formulation only: the monolithic one has "
-                           "neither the load path nor the Newton method, "
-                           "so near the limit it would decide F, not the "
-                           "model. Set 'Contact/Formulation = condensed'."));
-    AssertThrow(!output.write_contact_problems ||
-                  contact_solver.formulation !=
-                    ContactSolverParameters::Formulation::monolithic,
-                ExcMessage("Output/Write contact problems writes the "
-                           "condensed problem, which the monolithic "
-                           "formulation does not form. Set "
-                           "'Contact/Formulation = condensed' or 'both'."));
-    // Entries read only by strength reduction would be ignored silently.
-    AssertThrow(run.mode == "strength reduction" ||
-                  strength_reduction.closed_form_text.empty(),
-                ExcMessage("'Strength reduction/Closed-form factor of "
-                           "safety' is given, but Mode = " +
-                           run.mode +
-                           " runs no strength reduction: set Mode = "
-                           "strength reduction, or remove the entry."));
-    AssertThrow(run.mode != "strength reduction" || !plasticity.enabled,
-                ExcMessage("Mode = strength reduction reduces the joints' "
-                           "strength only; with 'Plasticity/Enabled = true' "
-                           "the rock's strength would stay as it is, and "
-                           "the plastic strain would have to be reset per "
-                           "trial. Not supported yet: run the plastic model "
-                           "at chosen strengths with Mode = simulation."));
+    check_strength_modes(*this);
     const bool excavates = !excavation.excavated_ids.empty() ||
                            !excavation.released_boundaries.empty();
     AssertThrow(!excavates || in_situ_stress.enabled,

@@ -275,7 +275,10 @@ namespace mbfem
                   << model.newton_suspensions
                   << " step(s); the elastic stiffness "
                   << "(initial-stress method) took over in them\n";
-    if (model.contact)
+    // A reliability run's samples are trials, which write nothing: the
+    // last one's interfaces are no result.
+    const bool samples_only = (model.parameters.run.mode == "reliability");
+    if (model.contact && !samples_only)
       print_interface_summary(*model.contact,
                               model.parameters.contact,
                               screen->detail("interfaces"));
@@ -287,13 +290,13 @@ namespace mbfem
     if (model.parameters.exact_solution.enabled)
       print_errors(history.time(history.n_increments));
 
-    if (writer)
+    if (writer && !samples_only)
       model.pcout << "  wrote " << history.n_increments << " VTU file(s)"
                   << (model.blocks.size() > 1 ? " per block" : "")
                   << " indexed by " << writer->pvd_file() << "\n";
     const std::string base = model.parameters.output.directory + "/" +
                              model.parameters.output.base_name;
-    if (model.contact && !model.parameters.run.test_mode)
+    if (model.contact && !model.parameters.run.test_mode && !samples_only)
       model.pcout << "  contact pairs per increment in " << base
                   << "-pairs-*.csv, a line per increment in " << base
                   << "-summary.csv\n";

@@ -588,6 +588,17 @@ namespace mbfem
 
   template <int dim>
   void
+  StageSequence<dim>::change_nominal_joints(
+    const std::function<void(const ContactPair<dim> &, JointLaw &)> &change)
+  {
+    for (auto &configuration : configurations)
+      configuration.solver->change_nominal_joints(change);
+  }
+
+
+
+  template <int dim>
+  void
   StageSequence<dim>::make_water()
   {
     if (!model.parameters.water_pressure.enabled())

@@ -174,6 +174,17 @@ namespace mbfem
 
   template <int dim>
   void
+  ContactSolver<dim>::change_nominal_joints(
+    const std::function<void(const ContactPair<dim> &, JointLaw &)> &change)
+  {
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      change(contact_pairs[k], nominal_joints[k]);
+  }
+
+
+
+  template <int dim>
+  void
   ContactSolver<dim>::restart(const double factor,
                               const bool   reduce_tensile_strength)
   {

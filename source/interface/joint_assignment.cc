@@ -72,7 +72,8 @@ namespace mbfem
         if (const JointSet *set =
               set_of_group(parameters, joint_faces, groups.of_pair[p]))
           {
-            pairs[p].joint = set->joint;
+            pairs[p].joint     = set->joint;
+            pairs[p].joint_set = set - parameters.joint_sets.data();
             area_of_set[set->name] += pairs[p].area;
           }
         else
@@ -93,6 +94,8 @@ namespace mbfem
         {
           pairs[p].joint =
             (by_plane ? by_plane->joint : parameters.default_joint);
+          if (by_plane)
+            pairs[p].joint_set = by_plane - parameters.joint_sets.data();
           area_of_set[by_plane ? by_plane->name : ""] += pairs[p].area;
         }
       return area_of_set;

@@ -4,6 +4,7 @@
 #include <mbfem/analysis/exact_solution.h>
 #include <mbfem/analysis/load_history.h>
 #include <mbfem/analysis/order_study.h>
+#include <mbfem/analysis/reliability.h>
 #include <mbfem/analysis/strength_reduction.h>
 #include <mbfem/block/block.h>
 #include <mbfem/block/boundary_conditions.h>
@@ -73,6 +74,7 @@ namespace mbfem
     Excavation                             excavation;
     PlasticityParameters                   plasticity;
     StrengthReductionParameters            strength_reduction;
+    ReliabilityParameters                  reliability;
     WaterPressureParameters<dim>           water_pressure;
   };
 

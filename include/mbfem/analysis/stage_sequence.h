@@ -73,6 +73,11 @@ namespace mbfem
     void
     restart_contact(const double factor);
 
+    /** ContactSolver::change_nominal_joints() on every configuration. */
+    void
+    change_nominal_joints(
+      const std::function<void(const ContactPair<dim> &, JointLaw &)> &change);
+
     /** ContactSolver::set_early_verdict() on every configuration's solver. */
     void
     set_early_verdict(const bool early);

@@ -35,16 +35,16 @@ namespace mbfem
     void
     run(const double setup_seconds);
 
-  private:
     /**
      * One trial: the load history from the start at the joints' strengths
      * divided by @p factor, silent and without output; with
      * @p statics_bound the certificate's strength factor after every
-     * increment.
+     * increment. (Also each sample's search of 'Mode = reliability'.)
      */
     StrengthTrial
     run_trial(const double factor, const bool statics_bound);
 
+  private:
     /**
      * run_trial(): the statics certificate (every pair unbroken) after an
      * increment into @p trial's statics bound, and at the @p last one the

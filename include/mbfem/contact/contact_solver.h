@@ -21,6 +21,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/timer.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -236,6 +237,15 @@ namespace mbfem
      */
     void
     restart(const double strength_factor, const bool reduce_tension = true);
+
+    /**
+     * Lets @p change set each pair's nominal joint law (the one restart()
+     * divides), given the pair: the strengths of a sample of 'Mode =
+     * reliability'. Takes effect at the next restart().
+     */
+    void
+    change_nominal_joints(
+      const std::function<void(const ContactPair<dim> &, JointLaw &)> &change);
 
     /** Contact forces on block @p b as (DoF, force) lists. */
     void

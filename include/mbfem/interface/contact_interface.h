@@ -124,6 +124,12 @@ namespace mbfem
     /** Friction, cohesion and tensile strength of the joint. */
     JointLaw joint;
     /**
+     * Index into ContactParameters::joint_sets of the set that gave the
+     * law (numbers::invalid_unsigned_int: none), for what is named by set
+     * later ('Mode = reliability').
+     */
+    unsigned int joint_set = numbers::invalid_unsigned_int;
+    /**
      * Both nodes on a support that fixes a direction oblique to the
      * interface (a fault meeting a roller boundary): the frame is then the
      * global axes, the supports carry the force in the fixed direction, and
