@@ -39,6 +39,8 @@ namespace mbfem
         case Quantity::tensile_strength:
           law.tensile_strength = value;
           break;
+        case Quantity::constant:
+          break; // not a joint's: ReliabilityRun sets the functions
       }
   }
 
@@ -55,6 +57,8 @@ namespace mbfem
           return "friction coefficient";
         case Quantity::cohesion:
           return "cohesion";
+        case Quantity::constant:
+          return "constant";
         default:
           return "tensile strength";
       }
@@ -76,7 +80,10 @@ namespace mbfem
         "friction angle, truncated normal mean 30 sd 3 min 15 max 45; c: "
         "all cohesion, lognormal mean 50e3 cov 0.3'. Target: 'all' (every "
         "joint), 'set NAME' (a joint set of Contact/Joint sets) or "
-        "'interface K' (the K-th interface of the screen's list). Quantity: "
+        "'interface K' (the K-th interface of the screen's list), or "
+        "'constant NAME' alone: a constant of the functions' 'Function "
+        "constants' (in every function that names it, e.g. a reservoir "
+        "level in the traction and the water pressure). Quantity: "
         "friction angle (degrees), friction coefficient (tan(phi)), "
         "cohesion, tensile strength; where two variables set the same "
         "quantity of a joint, the later one does. Distributions (OpenTURNS): "
@@ -130,6 +137,13 @@ namespace mbfem
     void
     read_target(const std::string &text, RandomVariable &v)
     {
+      if (text.rfind("constant ", 0) == 0)
+        {
+          v.quantity = RandomVariable::Quantity::constant;
+          v.constant = Utilities::trim(text.substr(9));
+          v.target   = text;
+          return;
+        }
       const std::vector<std::pair<std::string, RandomVariable::Quantity>>
         quantities = {
           {"friction angle", RandomVariable::Quantity::friction_angle},

@@ -6,6 +6,7 @@
 #include <mbfem/analysis/reliability_run.h>
 #include <mbfem/base/exceptions.h>
 #include <mbfem/base/files.h>
+#include <mbfem/block/boundary_conditions.h>
 
 #include <deal.II/base/timer.h>
 
@@ -13,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
+#include <set>
 #include <sstream>
 
 namespace mbfem
@@ -39,6 +41,23 @@ namespace mbfem
       {
         const std::string where =
           "Reliability/Random variables, the variable '" + v.name + "': ";
+        if (v.quantity == RandomVariable::Quantity::constant)
+          {
+            std::set<std::string> known;
+            for (const auto &function : parsed_functions())
+              for (const auto &[name, value] : function.constants)
+                known.insert(name);
+            std::string list;
+            for (const auto &name : known)
+              list += (list.empty() ? "" : ", ") + name;
+            AssertThrow(known.count(v.constant) > 0,
+                        ExcMessage(where + "no function names the constant '" +
+                                   v.constant +
+                                   "' in its 'Function "
+                                   "constants' (the constants named: " +
+                                   (list.empty() ? "none" : list) + ")."));
+            continue;
+          }
         if (!v.set_name.empty())
           AssertThrow(std::any_of(contact.joint_sets.begin(),
                                   contact.joint_sets.end(),
@@ -72,6 +91,25 @@ namespace mbfem
   void
   ReliabilityRun<dim>::apply(const std::vector<double> &values)
   {
+    // The functions that name a random constant, read again with the
+    // sample's values of all of them.
+    for (auto &function : parsed_functions())
+      {
+        auto constants = function.constants;
+        bool changed   = false;
+        for (unsigned int j = 0; j < parameters.variables.size(); ++j)
+          {
+            const auto &v = parameters.variables[j];
+            if (v.quantity == RandomVariable::Quantity::constant &&
+                constants.count(v.constant) > 0)
+              {
+                constants[v.constant] = values[j];
+                changed               = true;
+              }
+          }
+        if (changed)
+          function.set_constants(constants);
+      }
     const auto &sets = model.parameters.contact.joint_sets;
     stages.change_nominal_joints(
       [&](const ContactPair<dim> &pair, JointLaw &law) {
@@ -242,7 +280,10 @@ namespace mbfem
                  "sample's load history at F = 1")
            << ", on one set-up\n";
     for (const auto &v : parameters.variables)
-      header << "  " << v.name << ": " << v.target << " " << v.quantity_name()
+      header << "  " << v.name << ": " << v.target
+             << (v.quantity == RandomVariable::Quantity::constant ?
+                   "" :
+                   " " + v.quantity_name())
              << ", " << v.distribution << "\n";
     model.pcout << header.str();
     const std::string base = model.parameters.output.directory + "/" +

@@ -126,6 +126,8 @@ namespace mbfem
     void
     check_range(const RandomVariable &v, const OT::Distribution &distribution)
     {
+      if (v.quantity == RandomVariable::Quantity::constant)
+        return; // any value: the functions say what it means
       const OT::Interval range         = distribution.getRange();
       const bool         bounded_below = range.getFiniteLowerBound()[0];
       const bool         bounded_above = range.getFiniteUpperBound()[0];

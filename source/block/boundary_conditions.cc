@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iomanip>
 #include <sstream>
 
 namespace mbfem
@@ -224,6 +225,69 @@ namespace mbfem
 
 
 
+  std::vector<ParsedFunctionEntry> &
+  parsed_functions()
+  {
+    static std::vector<ParsedFunctionEntry> functions;
+    return functions;
+  }
+
+
+
+  namespace
+  {
+    /** 'a=1, b=2' (ParsedFunction's 'Function constants') as a map. */
+    std::map<std::string, double>
+    constants_of(const std::string &text)
+    {
+      std::map<std::string, double> constants;
+      for (const auto &entry : Utilities::split_string_list(text, ','))
+        {
+          const auto equals = entry.find('=');
+          if (equals != std::string::npos)
+            constants[Utilities::trim(entry.substr(0, equals))] =
+              Utilities::string_to_double(entry.substr(equals + 1));
+        }
+      return constants;
+    }
+
+    /**
+     * Records @p function, read from @p prm's present subsection, in
+     * parsed_functions(), with the way to read it again with other
+     * constants.
+     */
+    template <int dim>
+    void
+    record_function(
+      ParameterHandler                                      &prm,
+      const std::shared_ptr<Functions::ParsedFunction<dim>> &function,
+      const unsigned int                                     n_components,
+      const std::string                                     &where)
+    {
+      const std::string expression = prm.get("Function expression");
+      const std::string variables  = prm.get("Variable names");
+      const auto        set_constants =
+        [=](const std::map<std::string, double> &constants) {
+          ParameterHandler local;
+          Functions::ParsedFunction<dim>::declare_parameters(local,
+                                                             n_components);
+          std::ostringstream text;
+          text << std::setprecision(17);
+          for (const auto &[name, value] : constants)
+            text << (text.tellp() > 0 ? ", " : "") << name << "=" << value;
+          local.set("Function expression", expression);
+          local.set("Variable names", variables);
+          local.set("Function constants", text.str());
+          const QuietCerr quiet;
+          function->parse_parameters(local);
+        };
+      parsed_functions().push_back(
+        {where, constants_of(prm.get("Function constants")), set_constants});
+    }
+  } // namespace
+
+
+
   template <int dim>
   std::shared_ptr<Functions::ParsedFunction<dim>>
   parse_function(ParameterHandler  &prm,
@@ -271,6 +335,7 @@ namespace mbfem
                                "variables of 'Variable names' and the "
                                "names of 'Function constants')."));
       }
+    record_function<dim>(prm, function, n_components, where);
     return function;
   }
 

@@ -25,7 +25,9 @@ namespace mbfem
       friction_angle,
       friction_coefficient,
       cohesion,
-      tensile_strength
+      tensile_strength,
+      /** A named constant of the functions' 'Function constants'. */
+      constant
     };
 
     std::string name;
@@ -37,6 +39,8 @@ namespace mbfem
     /** 0-based; numbers::invalid_unsigned_int unless 'interface K'. */
     unsigned int interface = static_cast<unsigned int>(-1);
     Quantity     quantity  = Quantity::friction_angle;
+    /** The constant's name (Quantity::constant). */
+    std::string constant;
     /** normal, lognormal, uniform, truncated normal, beta, triangular. */
     std::string distribution;
     /** Its numbers by key: mean, sd, cov, min, max, mode, alpha, beta. */

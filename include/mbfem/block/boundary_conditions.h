@@ -6,6 +6,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/fe/component_mask.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -89,6 +90,23 @@ namespace mbfem
   parse_function(ParameterHandler  &prm,
                  const unsigned int n_components,
                  const std::string &where);
+
+  /**
+   * A function read by parse_function(): where, the constants its
+   * 'Function constants' names, and how to read it again with other
+   * values of them (a random constant of 'Mode = reliability': a reservoir
+   * level written once as a constant in the traction and the uplift).
+   */
+  struct ParsedFunctionEntry
+  {
+    std::string                                                where;
+    std::map<std::string, double>                              constants;
+    std::function<void(const std::map<std::string, double> &)> set_constants;
+  };
+
+  /** The functions parse_function() has read in this process, in order. */
+  std::vector<ParsedFunctionEntry> &
+  parsed_functions();
 
   /** "0: xy, 2: y" -> {0: mask(x,y), 2: mask(y)}; @p where names the entry. */
   template <int dim>
