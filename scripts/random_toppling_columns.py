@@ -630,7 +630,7 @@ def main():
     rng = random.Random(args.seed)
     models = [draw(rng, args.cohesive_share) for _ in range(args.count)]
     chosen = [int(v) for v in args.models.split(",") if v]
-    counts, failures = {}, []
+    counts, failures, runs = {}, [], []
     start = time.time()
     n_models = 0
     for i, m in enumerate(models):
@@ -652,6 +652,7 @@ def main():
             c = counts.setdefault(lam, {})
             c[run.outcome] = c.get(run.outcome, 0) + 1
             bad = wrong(lam, run)
+            runs.append((i, lam, run))
             print("  model %3d n=%2d p=%d at %.2f: %s%s" % (
                 i, m["n"], m["p"], lam,
                 run.describe(lam * reference(m, lam)),
@@ -678,6 +679,24 @@ def main():
         c = counts.get(lam, {})
         print("  %-6.2f %s" % (lam, " ".join("%14d" % c.get(k, 0)
                                              for k in COLUMNS)))
+    for helps, what in ((False, "F = F_norise (the risers do not help)"),
+                        (True, "F > F_norise (the risers help)")):
+        ids = [i for i in {r[0] for r in runs}
+               if (models[i]["F"] > models[i]["F_norise"] * (1. + 1e-6))
+               == helps]
+        print("  models with %s: %d; exit code 3 below the limit in %d "
+              "of them" % (what, len(ids), len({
+                  i for i, lam, run in runs if i in ids and lam < 1.
+                  and run.outcome == "not-converged"})))
+    certs = [(run.certificate * lam * reference(models[i], lam), i)
+             for i, lam, run in runs if run.certificate]
+    if certs:
+        low = min((c / models[i]["F_norise"], i) for c, i in certs)
+        high = max((c / models[i]["F"], i) for c, i in certs)
+        print("  mbfem's certificate's limit against F_norise and F (%d "
+              "runs with a certificate): smallest limit / F_norise %.6f "
+              "(model %d), largest limit / F %.6f (model %d)"
+              % ((len(certs),) + low + high))
     print("work folder:", work)
     return 0 if not failures else 1
 
