@@ -108,7 +108,8 @@ answer: exit code 3 below the limit (the defect the campaign looks for),
 below the limit means mbfem's certificate found no forces where this LP
 did (mbfem's certificate and this LP disagree, or the increment broke
 cohesion). --keep DIR copies the .geo, .msh, .prm and the screen output
-(.out, .err) of every failure there, as test inputs.
+(.out, .err) of every failure there, as test inputs, and the contact
+problem its failed increment wrote (DIR/NAME/*-failed-problem-*).
 
   /usr/bin/python3 scripts/random_toppling_columns.py [--count 40]
       [--seed N] [--models 3,17] [--mbfem build/mbfem] [--work DIR]
@@ -577,12 +578,23 @@ def wrong(lam, run):
 
 
 def keep_failure(keep, geo, mesh, run):
+    """Copies the run's inputs (.geo, .msh, .prm), its screen output and
+    the contact problem its failed increment wrote (its folder's
+    *-failed-problem-*, for scripts/check_contact_problem_2d.py)."""
     os.makedirs(keep, exist_ok=True)
     for path in (geo, mesh, run.prm, run.prm[:-4] + ".out",
                  run.prm[:-4] + ".err"):
         if os.path.exists(path) and not os.path.exists(
                 os.path.join(keep, os.path.basename(path))):
             shutil.copy(path, keep)
+    results = run.prm[:-4]
+    problems = [f for f in (os.listdir(results) if os.path.isdir(results)
+                            else []) if "-failed-problem-" in f]
+    if problems:
+        target = os.path.join(keep, os.path.basename(results))
+        os.makedirs(target, exist_ok=True)
+        for f in problems:
+            shutil.copy(os.path.join(results, f), target)
 
 
 def main():
