@@ -113,11 +113,15 @@ problem its failed increment wrote (DIR/NAME/*-failed-problem-*).
 
   /usr/bin/python3 scripts/random_toppling_columns.py [--count 40]
       [--seed N] [--models 3,17] [--mbfem build/mbfem] [--work DIR]
-      [--keep DIR] [--timeout 300] [--cohesive-share 0] [--dry-run]
+      [--keep DIR] [--timeout 300] [--budget S] [--cohesive-share 0]
+      [--flat] [--dry-run]
 
 Runs one mbfem at a time with OPENBLAS_NUM_THREADS=1 (and the binary's
-folder on LD_LIBRARY_PATH, for a copied build). --dry-run draws the
-models, prints their lines and writes their meshes, but runs nothing.
+folder on LD_LIBRARY_PATH, for a copied build). --budget S starts no new
+model after S seconds of runs. --dry-run draws the models, prints their
+lines and writes their meshes, but runs nothing. --flat runs the same
+draw with the steps removed (b = 0: every block on one plane, no risers,
+no step edges), to tell whether a failure needs the steps.
 """
 
 import argparse
@@ -171,7 +175,7 @@ def column_statics(m, risers=True, gb_point=False, gap=0.):
                           n=(0., 1.), t=(1., 0.),
                           points=[(k, (x, k * b), None, None)
                                   for x in (xs[k], xs[k] + dx)]))
-        if k + 1 < n and risers:
+        if k + 1 < n and risers and b > 0.:
             faces.append(dict(mu=mu, cohesion=m["c"] * b, tension=0.,
                               n=(1., 0.), t=(0., 1.),
                               points=[(k, (xs[k], y), None, None)
@@ -624,6 +628,11 @@ def main():
                         help="start no new model after this many seconds "
                         "of runs (0: no limit); the summary says how many "
                         "were run")
+    parser.add_argument("--flat", action="store_true",
+                        help="a diagnostic: the models drawn as usual, "
+                        "then run with the steps removed (b = 0, psi_b = "
+                        "psi_p: every block on one plane, no risers; F = "
+                        "F_norise recomputed)")
     parser.add_argument("--dry-run", action="store_true",
                         help="draw and mesh the models, run nothing")
     args = parser.parse_args()
@@ -652,6 +661,15 @@ def main():
             print("budget of %.0f s spent: models %d to %d not run"
                   % (args.budget, i, len(models) - 1), flush=True)
             break
+        if args.flat:
+            m["b"], m["psi_b"] = 0., m["psi_p"]
+            try:
+                m["F_norise"] = m["F"] = lp_limit(*column_statics(m))
+            except RuntimeError:
+                print("model %3d: no verdict of HiGHS on the flat column; "
+                      "not run" % i, flush=True)
+                continue
+            m["F_GB"] = gb_limit(m) if m["c"] == 0. else None
         n_models += 1
         geo, mesh = write_mesh(work, i, m)
         print(model_text(i, m), flush=True)
