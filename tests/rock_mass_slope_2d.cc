@@ -11,7 +11,7 @@
 //    their weight, every block in equilibrium, to 1e-9 (jointed_checks.h).
 // The states differ between the two: the cells of the base differ.
 
-#include <deal.II/grid/grid_in.h>
+#include <mbfem/mesh/mesh.h>
 
 #include <algorithm>
 
@@ -19,14 +19,19 @@
 
 namespace
 {
-  /** The areas of the blocks (material ids) of @p file but block 1. */
+  /**
+   * The areas of the blocks (material ids) of @p file but block 1, read as
+   * mbfem reads it (the rock mass's joints are physical groups of interior
+   * curves, which deal.II's GridIn alone refuses).
+   */
   std::vector<double>
   block_areas(const std::string &file)
   {
-    Triangulation<2> mesh;
-    GridIn<2>        in(mesh);
-    std::ifstream    stream(file);
-    in.read_msh(stream);
+    Triangulation<2>      mesh;
+    mbfem::MeshParameters parameters;
+    parameters.source    = "gmsh";
+    parameters.mesh_file = file;
+    mbfem::create_mesh(parameters, mesh);
     std::map<types::material_id, double> area;
     for (const auto &cell : mesh.active_cell_iterators())
       if (cell->material_id() != 1)

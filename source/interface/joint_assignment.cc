@@ -9,7 +9,11 @@ namespace mbfem
 {
   namespace
   {
-    /** The joint set that names mesh group @p g, or nullptr. */
+    /**
+     * The joint set that names mesh group @p g ('group NAME'), or else the
+     * set without a group whose own name is the group's (a rock mass's
+     * groups carry their sets' names), or nullptr.
+     */
     template <int dim>
     const JointSet *
     set_of_group(const ContactParameters &parameters,
@@ -20,6 +24,9 @@ namespace mbfem
         return nullptr;
       for (const auto &set : parameters.joint_sets)
         if (!set.group.empty() && set.group == joint_faces.name(g))
+          return &set;
+      for (const auto &set : parameters.joint_sets)
+        if (set.group.empty() && set.name == joint_faces.name(g))
           return &set;
       return nullptr;
     }

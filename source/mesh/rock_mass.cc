@@ -586,6 +586,77 @@ namespace mbfem
                              "point, dip and dip direction."));
     }
 
+    /**
+     * Whether every corner of the face (curve in 2D) @p tag lies on a
+     * plane of @p set: the face is a piece of that set's joints.
+     */
+    bool
+    on_set(const int                  tag,
+           const JointPlanes         &set,
+           const std::vector<double> &offsets,
+           const unsigned int         dim,
+           const double               tolerance)
+    {
+      DimTags points;
+      gmsh::model::getBoundary(
+        {{int(dim) - 1, tag}}, points, false, false, true);
+      for (const double offset : offsets)
+        {
+          bool all = !points.empty();
+          for (const auto &[d, point] : points)
+            {
+              std::vector<double> x;
+              gmsh::model::getValue(0, point, {}, x);
+              all = all && std::abs(dot(set.normal, {{x[0], x[1], x[2]}}) -
+                                    offset) < tolerance;
+            }
+          if (all)
+            return true;
+        }
+      return false;
+    }
+
+    /**
+     * Physical groups of the joints between blocks, one per set with the
+     * set's name (tags from 1000): the faces in one of its planes. The
+     * mesh's reader hands them to the joint sets by name
+     * (mesh/joint_faces.h), so each face takes its own set's law, not the
+     * set of the nearest orientation.
+     */
+    void
+    add_joint_groups(const Domain                   &domain,
+                     const std::vector<JointPlanes> &sets,
+                     const unsigned int              dim)
+    {
+      const double tolerance = 1e-6 * std::sqrt(dot(domain.size, domain.size));
+      std::vector<std::vector<int>> groups(sets.size());
+      DimTags                       faces;
+      gmsh::model::getEntities(faces, dim - 1);
+      for (const auto &[d, tag] : faces)
+        {
+          std::vector<int> up, down;
+          gmsh::model::getAdjacencies(d, tag, up, down);
+          if (up.size() != 2)
+            continue; // not between two blocks
+          for (unsigned int s = 0; s < sets.size(); ++s)
+            if (on_set(tag,
+                       sets[s],
+                       plane_offsets(sets[s], domain, dim),
+                       dim,
+                       tolerance))
+              {
+                groups[s].push_back(tag);
+                break;
+              }
+        }
+      for (unsigned int s = 0; s < sets.size(); ++s)
+        if (!groups[s].empty())
+          {
+            gmsh::model::addPhysicalGroup(dim - 1, groups[s], 1000 + s);
+            gmsh::model::setPhysicalName(dim - 1, 1000 + s, sets[s].name);
+          }
+    }
+
     /** Every plane of every set cut into the domain (@p dim - 1 entities). */
     DimTags
     add_planes(const Domain                   &domain,
@@ -839,6 +910,7 @@ namespace mbfem
         const int base = cut_blocks(domain, sets, dim, summary);
         add_block_groups(domain, dim, base, summary);
         add_boundary_groups(domain, dim);
+        add_joint_groups(domain, sets, dim);
         set_mesh_options(domain, dim);
         gmsh::model::mesh::generate(dim);
         std::vector<int>                      types;
