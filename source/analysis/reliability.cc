@@ -119,6 +119,16 @@ namespace mbfem
                         "Seed of OpenTURNS' random generator: the same seed "
                         "draws the same samples.");
       prm.declare_entry(
+        "Method",
+        "sampling",
+        Patterns::Selection("sampling|FORM"),
+        "'sampling': the samples of 'Sampling' and P(F < 1) counted. "
+        "'FORM': the first-order reliability method (OpenTURNS' FORM with "
+        "Cobyla): the point of F = 1 nearest the mean in the standard "
+        "normal space (the design point), the reliability index beta, "
+        "Phi(-beta) and the importance factors; each evaluation one "
+        "factor of safety (Answer = factor of safety).");
+      prm.declare_entry(
         "Answer",
         "factor of safety",
         Patterns::Selection("factor of safety|stands at F = 1"),
@@ -298,6 +308,11 @@ namespace mbfem
       n_samples        = prm.get_integer("Number of samples");
       seed             = prm.get_integer("Seed");
       factor_of_safety = (prm.get("Answer") == "factor of safety");
+      method           = prm.get("Method");
+      AssertThrow(method != "FORM" || factor_of_safety,
+                  ExcMessage("Reliability/Method = FORM needs each model's "
+                             "factor of safety (its limit state F - 1): set "
+                             "'Answer = factor of safety'."));
     }
     prm.leave_subsection();
   }

@@ -151,6 +151,7 @@ namespace mbfem
       try
         {
           sample.factor = search.search(trial);
+          sample.upper  = search.upper();
         }
       catch (const ExceptionBase &e)
         {
@@ -270,14 +271,16 @@ namespace mbfem
   {
     const ReliabilitySamples values = draw_samples(parameters);
     check_targets();
-    const unsigned int N = values.size();
     std::ostringstream header;
-    header << "Reliability: " << N << " samples (" << parameters.sampling
-           << ", seed " << parameters.seed << ") of "
-           << parameters.variables.size() << " random variable(s); each "
+    if (parameters.method == "FORM")
+      header << "Reliability: FORM (OpenTURNS, Cobyla from the mean) of ";
+    else
+      header << "Reliability: " << values.size() << " samples ("
+             << parameters.sampling << ", seed " << parameters.seed << ") of ";
+    header << parameters.variables.size() << " random variable(s); each "
            << (parameters.factor_of_safety ?
-                 "sample's factor of safety by strength reduction" :
-                 "sample's load history at F = 1")
+                 "model's factor of safety by strength reduction" :
+                 "model's load history at F = 1")
            << ", on one set-up\n";
     for (const auto &v : parameters.variables)
       header << "  " << v.name << ": " << v.target
@@ -294,6 +297,30 @@ namespace mbfem
     csv += std::string(",F,verdict,trials,trials_gave_up") +
            (model.parameters.run.test_mode ? "" : ",seconds") + "\n";
 
+    Timer             clock;
+    const std::string text =
+      (parameters.method == "FORM" ? run_form_method(base, csv) :
+                                     run_samples(values, base, csv));
+    model.pcout << text;
+    if (!model.parameters.run.test_mode)
+      model.pcout << "  set-up " << std::fixed << std::setprecision(2)
+                  << setup_seconds << " s, " << parameters.method << " "
+                  << clock.wall_time() << " s" << std::defaultfloat
+                  << std::setprecision(6) << "\n";
+    model.pcout << "  a line per model run in " << base
+                << ".csv, the estimates in " << base << "-summary.txt\n";
+    write_file_atomically(base + "-summary.txt", header.str() + text);
+  }
+
+
+
+  template <int dim>
+  std::string
+  ReliabilityRun<dim>::run_samples(const ReliabilitySamples &values,
+                                   const std::string        &base,
+                                   std::string              &csv)
+  {
+    const unsigned int             N = values.size();
     std::vector<ReliabilitySample> samples;
     Timer                          clock;
     const unsigned int             every = std::max(1u, N / 20);
@@ -320,15 +347,50 @@ namespace mbfem
             model.pcout << "\n";
           }
       }
-    const std::string text = summary(samples);
-    model.pcout << text;
-    if (!model.parameters.run.test_mode)
-      model.pcout << "  set-up " << std::fixed << std::setprecision(2)
-                  << setup_seconds << " s, samples " << clock.wall_time()
-                  << " s" << std::defaultfloat << std::setprecision(6) << "\n";
-    model.pcout << "  a line per sample in " << base
-                << ".csv, the estimates in " << base << "-summary.txt\n";
-    write_file_atomically(base + "-summary.txt", header.str() + text);
+    return summary(samples);
+  }
+
+
+
+  template <int dim>
+  std::string
+  ReliabilityRun<dim>::run_form_method(const std::string &base,
+                                       std::string       &csv)
+  {
+    unsigned int i = 0;
+    // Each evaluation of the limit state: the model at those values, its
+    // factor of safety (0 where every factor down to 0.001 fails).
+    const auto factor = [&](const std::vector<double> &values) {
+      apply(values);
+      const ReliabilitySample sample = solve_sample();
+      csv += csv_line(i++, values, sample);
+      write_file_atomically(base + ".csv", csv);
+      model.pcout << "  evaluation " << i << ":";
+      for (unsigned int j = 0; j < values.size(); ++j)
+        model.pcout << " " << parameters.variables[j].name << " = "
+                    << values[j];
+      model.pcout << ", F = " << sample.factor << "\n";
+      // The middle of the search's bracket: the limit state's root then
+      // lies within a quarter of the bracket (1e-3) of the model's.
+      return std::isnan(sample.factor) ? 0. :
+             std::isinf(sample.upper)  ? sample.factor :
+                                         0.5 * (sample.factor + sample.upper);
+    };
+    const FormResult   form = run_form(parameters, factor);
+    std::ostringstream out;
+    out << std::setprecision(6) << "  FORM: design point";
+    for (unsigned int j = 0; j < form.design_point.size(); ++j)
+      out << " " << parameters.variables[j].name << " = "
+          << form.design_point[j];
+    out << "\n  reliability index beta = " << form.beta
+        << " (Hasofer and Lind's), P(F < 1) = Phi(-beta) = " << form.probability
+        << "\n  importance factors:";
+    for (unsigned int j = 0; j < form.importance.size(); ++j)
+      out << " " << parameters.variables[j].name << " " << form.importance[j];
+    out << "\n  " << form.evaluations
+        << " evaluations of the limit state F - 1 (a strength-reduction "
+           "search each)\n";
+    return out.str();
   }
 
 

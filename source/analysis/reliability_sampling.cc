@@ -8,16 +8,22 @@
 #include <deal.II/base/exceptions.h>
 
 #include <openturns/Beta.hxx>
+#include <openturns/Cobyla.hxx>
 #include <openturns/ComposedDistribution.hxx>
+#include <openturns/CompositeRandomVector.hxx>
 #include <openturns/CorrelationMatrix.hxx>
 #include <openturns/DistFunc.hxx>
+#include <openturns/EvaluationImplementation.hxx>
+#include <openturns/FORM.hxx>
 #include <openturns/LHSExperiment.hxx>
+#include <openturns/Less.hxx>
 #include <openturns/LogNormalMuSigma.hxx>
 #include <openturns/LowDiscrepancyExperiment.hxx>
 #include <openturns/Normal.hxx>
 #include <openturns/NormalCopula.hxx>
 #include <openturns/RandomGenerator.hxx>
 #include <openturns/SobolSequence.hxx>
+#include <openturns/ThresholdEvent.hxx>
 #include <openturns/Triangular.hxx>
 #include <openturns/TruncatedNormal.hxx>
 #include <openturns/Uniform.hxx>
@@ -233,6 +239,89 @@ namespace mbfem
       for (unsigned int j = 0; j < n; ++j)
         samples[i][j] = x(i, j);
     return samples;
+  }
+
+
+
+  namespace
+  {
+    /** The limit state g(x) = F(x) - 1 as an OpenTURNS evaluation. */
+    class LimitState : public OT::EvaluationImplementation
+    {
+    public:
+      LimitState(
+        const std::function<double(const std::vector<double> &)> &factor,
+        const unsigned int                                        n,
+        unsigned int                                             &calls)
+        : factor(factor)
+        , n(n)
+        , calls(&calls)
+      {}
+
+      LimitState *
+      clone() const override
+      {
+        return new LimitState(*this);
+      }
+
+      OT::Point
+      operator()(const OT::Point &x) const override
+      {
+        ++*calls;
+        return OT::Point(1,
+                         factor(std::vector<double>(x.begin(), x.end())) - 1.);
+      }
+
+      OT::UnsignedInteger
+      getInputDimension() const override
+      {
+        return n;
+      }
+
+      OT::UnsignedInteger
+      getOutputDimension() const override
+      {
+        return 1;
+      }
+
+    private:
+      std::function<double(const std::vector<double> &)> factor;
+      unsigned int                                       n;
+      unsigned int                                      *calls;
+    };
+  } // namespace
+
+
+
+  FormResult
+  run_form(const ReliabilityParameters                              &parameters,
+           const std::function<double(const std::vector<double> &)> &factor)
+  {
+    const OT::ComposedDistribution distribution =
+      joint_distribution(parameters);
+    FormResult         result;
+    const OT::Function g(
+      LimitState(factor, parameters.variables.size(), result.evaluations));
+    const OT::RandomVector   x(distribution);
+    const OT::ThresholdEvent event(OT::CompositeRandomVector(g, x),
+                                   OT::Less(),
+                                   0.);
+    OT::Cobyla               cobyla;
+    // F is found to the strength-reduction search's tolerance (1e-3).
+    cobyla.setMaximumEvaluationNumber(200);
+    cobyla.setMaximumAbsoluteError(1e-4);
+    cobyla.setMaximumConstraintError(1e-5);
+    cobyla.setRhoBeg(0.5);
+    OT::FORM form(cobyla, event, distribution.getMean());
+    form.run();
+    const OT::FORMResult found = form.getResult();
+    result.beta                = found.getHasoferReliabilityIndex();
+    result.probability         = found.getEventProbability();
+    for (const double x : found.getPhysicalSpaceDesignPoint())
+      result.design_point.push_back(x);
+    for (const double f : found.getImportanceFactors())
+      result.importance.push_back(f);
+    return result;
   }
 
 

@@ -5,6 +5,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -77,6 +78,8 @@ namespace mbfem
     unsigned int seed      = 1;
     /** Each sample's factor of safety, or only whether it stands at F = 1. */
     bool factor_of_safety = true;
+    /** 'sampling', or 'FORM': the design point of g = F - 1. */
+    std::string method = "sampling";
   };
 
   /** The values drawn: one row per sample, one column per variable. */
@@ -95,6 +98,27 @@ namespace mbfem
    */
   ReliabilitySamples
   draw_samples(const ReliabilityParameters &parameters);
+
+  /** What FORM found: the design point of F - 1 = 0 nearest the mean. */
+  struct FormResult
+  {
+    /** Hasofer and Lind's index and Phi(-beta) (the event's side). */
+    double beta = 0., probability = 0.;
+    /** The design point in the variables' units. */
+    std::vector<double> design_point;
+    /** The importance factors (OpenTURNS', elliptical: squares of alpha). */
+    std::vector<double> importance;
+    unsigned int        evaluations = 0;
+  };
+
+  /**
+   * FORM with OpenTURNS (Cobyla for the nearest point in the standard
+   * space, from the mean): @p factor maps the variables' values to the
+   * model's factor of safety, each call one strength-reduction search.
+   */
+  FormResult
+  run_form(const ReliabilityParameters                              &parameters,
+           const std::function<double(const std::vector<double> &)> &factor);
 
   /** The estimates of P(F < 1) from a count of failures. */
   struct FailureProbability

@@ -28,6 +28,8 @@ namespace mbfem
     Verdict verdict = Verdict::stands;
     /** Its factor of safety (NaN with 'stands at F = 1', or no search). */
     double factor = std::numeric_limits<double>::quiet_NaN();
+    /** The upper end of the search's final bracket (inf: none). */
+    double upper = std::numeric_limits<double>::infinity();
     /** Load histories run, and how many of them gave up (exit code 3). */
     unsigned int trials = 0, trials_gave_up = 0;
     double       seconds = 0.;
@@ -73,6 +75,16 @@ namespace mbfem
     csv_line(const unsigned int         i,
              const std::vector<double> &values,
              const ReliabilitySample   &sample) const;
+
+    /** The samples and their estimates; a CSV line each into @p csv. */
+    std::string
+    run_samples(const ReliabilitySamples &values,
+                const std::string        &base,
+                std::string              &csv);
+
+    /** FORM on the limit state F - 1; a CSV line per evaluation. */
+    std::string
+    run_form_method(const std::string &base, std::string &csv);
 
     /** The estimates, for the screen and the summary file. */
     std::string
