@@ -6,8 +6,9 @@
 #    33.9266 deg, beta = -Phi^-1(P(phi < phi*)) = 1.21481 for the truncated
 #    normal (40, 5) in [20, 60]. Asked: phi* and beta within 1e-3 relative
 #    (each evaluation's F is the middle of a search bracket 1e-3 wide).
-# 2. phi truncated normal (36, 4) in [20, 60] and the reservoir level h
-#    uniform in [20, 30] m, a constant of the traction and the uplift:
+# 2. parameters/gravity_dam_level_reliability.prm: phi truncated normal
+#    (36, 4) in [20, 60] and the reservoir level h uniform in [20, 30] m, a
+#    constant of the traction and the uplift:
 #    F = (W - 6.5 pw h) tan(phi) / (pw h^2 / 2). The reference is the same
 #    FORM on that closed form with scipy (SLSQP in the standard space,
 #    independent marginals): beta within 1e-3 relative, the design point
@@ -31,29 +32,10 @@ subsection Output
 end
 PRM
 cat > two.prm <<PRM
-include $source_dir/parameters/gravity_dam_safety.prm
-set Mode = reliability
+include $source_dir/parameters/gravity_dam_level_reliability.prm
 set Test mode = true
-subsection Boundary conditions
-  subsection Traction
-    set Function constants  = pw=10e3, h=30
-    set Function expression = pw * max(h - y, 0) * t; 0
-  end
-end
-subsection Water pressure
-  set Function constants  = pw=10e3, h=30, xd=5, b=24
-  set Function expression = t * (x < xd ? pw*h + (pw*h/3 - pw*h) * x / xd : pw*h/3 * (b - x) / (b - xd))
-end
-subsection Strength reduction
-  set Closed-form factor of safety =
-end
-subsection Reliability
-  set Random variables = phi: interface 1 friction angle, truncated normal mean 36 sd 4 min 20 max 60; h: constant h, uniform min 20 max 30
-  set Method           = FORM
-end
 subsection Output
   set Base name = two
-  set Write VTU = false
 end
 PRM
 for run in one two; do

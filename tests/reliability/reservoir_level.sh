@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Issue 63: a random constant of the functions (the reservoir level h),
-# named in two functions at once: the traction on the dam's upstream face,
+# Issue 63: a random constant of the functions (the reservoir level h of
+# parameters/gravity_dam_level_reliability.prm, sampled alone: the
+# friction stays tan(phi) = 1), named in two functions at once: the traction on the dam's upstream face,
 # pw max(h - y, 0) t, and the drained uplift in its foundation joint (pw h
 # at the heel, a third of it at the drain 5 m downstream, 0 at the toe).
 # The dam of parameters/gravity_dam_safety.prm (W = 8640 kN/m, tan(phi) =
@@ -17,30 +18,16 @@ source_dir=$2
 work=$3
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 cat > level.prm <<PRM
-include $source_dir/parameters/gravity_dam_safety.prm
-set Mode = reliability
+include $source_dir/parameters/gravity_dam_level_reliability.prm
 set Test mode = true
-subsection Boundary conditions
-  subsection Traction
-    set Function constants  = pw=10e3, h=30
-    set Function expression = pw * max(h - y, 0) * t; 0
-  end
-end
-subsection Water pressure
-  set Function constants  = pw=10e3, h=30, xd=5, b=24
-  set Function expression = t * (x < xd ? pw*h + (pw*h/3 - pw*h) * x / xd : pw*h/3 * (b - x) / (b - xd))
-end
-subsection Strength reduction
-  set Closed-form factor of safety =
-end
 subsection Reliability
   set Random variables  = h: constant h, uniform min 20 max 30
+  set Method            = sampling
   set Number of samples = 12
   set Seed              = 5
 end
 subsection Output
   set Base name = level
-  set Write VTU = false
 end
 PRM
 "$mbfem" level.prm > screen.txt 2>&1 || { cat screen.txt; echo "FAIL: mbfem"; exit 1; }
