@@ -14,8 +14,9 @@ build_dir=${MBFEM_BUILD_DIR:-$source_dir/build}
 # (block flexibilities); OpenBLAS (threaded) for dense LAPACK and MUMPS
 # through Debian's alternatives; gmsh for meshes;
 # numdiff and perl for deal.II's test macros; clang-format for the style
-# check; COIN-OR Clp for the statics certificate's linear program; MUMPS's
-# C API for the block flexibilities; matplotlib for the default example's
+# check; COIN-OR Clp for the statics certificate's linear program; gmsh's
+# C API for rock masses; OpenTURNS for Mode = reliability (distributions,
+# copulas, samples, FORM); matplotlib for the default example's
 # figure; SciPy and CVXOPT for the scripts that check written contact
 # problems; Open MPI's mpirun for runs and tests on several ranks; the
 # compiler and build tools.
