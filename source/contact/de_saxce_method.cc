@@ -484,10 +484,8 @@ namespace mbfem
     for (unsigned int k = 0; k < problem.n_pairs; ++k)
       {
         const auto &pair = problem.pairs[k];
-        const bool  gone = pair.broken || broken[k];
         if (!pair.tied && !pair.held[0] && u(k * dim) > gap &&
-            (pair.joint.slip_line(pair.area, gone).intercept > 0. ||
-             pair.joint.tensile_limit(pair.area, gone) > 0.))
+            !(pair.broken || broken[k]) && pair.joint.has_strength())
           opened.push_back(k);
       }
     return opened;

@@ -634,9 +634,7 @@ namespace mbfem
     for (unsigned int k = 0; k < problem.n_pairs; ++k)
       {
         const auto &pair = problem.pairs[k];
-        const bool  gone = pair.broken || broken[k];
-        if ((pair.joint.slip_line(pair.area, gone).intercept > 0. ||
-             pair.joint.tensile_limit(pair.area, gone) > 0.) &&
+        if (!(pair.broken || broken[k]) && pair.joint.has_strength() &&
             variables[k].normal != numbers::invalid_unsigned_int &&
             u(k * dim) > gap)
           opened.push_back(k);
